@@ -1,0 +1,78 @@
+#pragma once
+// Plugin parameters are declared once, as data: from one declaration come INI validation,
+// the "did you mean" error for a misspelt key, and `pedtrack plugins NAME`.
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pedtrack {
+
+enum class ParamType { Bool, Int, Double, String, Enum, InputFile, OutputFile };
+const char* toString(ParamType t);
+
+struct ParamSpec {
+  std::string name;
+  ParamType type = ParamType::String;
+  std::string unit;                                       ///< "m", "s", "Hz", "" for none
+  std::optional<std::string> default_value;               ///< no default → the key is required
+  double min = -std::numeric_limits<double>::infinity();  ///< Int/Double only
+  double max = std::numeric_limits<double>::infinity();
+  std::vector<std::string> choices;  ///< Enum only
+  std::string doc;                   ///< one line
+
+  // Fluent builders, so a plugin's declaration reads as a table.
+  static ParamSpec boolean(std::string name, bool def, std::string doc);
+  static ParamSpec integer(std::string name, std::optional<long> def, std::string unit, double min,
+                           double max, std::string doc);
+  static ParamSpec real(std::string name, std::optional<double> def, std::string unit, double min,
+                        double max, std::string doc);
+  static ParamSpec text(std::string name, std::optional<std::string> def, std::string doc);
+  static ParamSpec choice(std::string name, std::string def, std::vector<std::string> choices,
+                          std::string doc);
+  /// A file that must exist before the first frame (checked at validation time).
+  static ParamSpec inputFile(std::string name, std::string doc);
+  bool required() const { return !default_value.has_value(); }
+  /// "[0, 100]", "{realtime, max}" or "" when anything of the type goes.
+  std::string rangeText() const;
+};
+
+/// Validated values of one plugin instance (one INI section). Only keys that were declared
+/// can be read; every declared key has a value (given or default).
+class ParamSet {
+ public:
+  ParamSet() = default;
+  ParamSet(std::string file, std::string section)
+      : file_(std::move(file)), section_(std::move(section)) {}
+
+  void set(const std::string& key, std::string value) { values_[key] = std::move(value); }
+  bool has(const std::string& key) const { return values_.count(key) != 0; }
+
+  const std::string& getString(const std::string& key) const;
+  double getDouble(const std::string& key) const;
+  long getInt(const std::string& key) const;
+  bool getBool(const std::string& key) const;
+  /// Splits a list value on whitespace and commas.
+  std::vector<std::string> getList(const std::string& key) const;
+
+  const std::string& file() const { return file_; }
+  const std::string& section() const { return section_; }
+  /// "pipeline.ini: [source] file" — the prefix every error about this key starts with.
+  std::string where(const std::string& key) const;
+  const std::map<std::string, std::string>& values() const { return values_; }
+
+ private:
+  std::string file_, section_;
+  std::map<std::string, std::string> values_;
+};
+
+/// Checks `value` against `spec`; returns the normalised value or throws ConfigError whose text
+/// starts with `where`.
+std::string validateValue(const ParamSpec& spec, const std::string& value,
+                          const std::string& where);
+
+/// The closest candidate to `word` by edit distance, or "" when nothing is close enough.
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace pedtrack

@@ -1,0 +1,46 @@
+#pragma once
+// A pipeline file (MRPT CConfigFile syntax) read, overridden from the command line and validated
+// against the plugins' declarations before anything runs.
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pedtrack/plugin_registry.h"
+
+namespace pedtrack {
+
+struct PipelineOverrides {
+  std::string input;              ///< --input: replaces the source with a replay of this file
+  std::string topic;              ///< --topic: bag topic for --input
+  std::vector<std::string> sets;  ///< --set section.key=value
+};
+
+struct StageConfig {
+  std::string section;
+  const PluginDescriptor* descriptor = nullptr;
+  ParamSet params;
+};
+
+class PipelineConfig {
+ public:
+  /// Throws ConfigError with one line naming file, section and key on any problem.
+  static PipelineConfig load(const std::string& file, const PipelineOverrides& overrides,
+                             const PluginRegistry& registry);
+  /// Same, from text (tests, built-in pipelines); `file` names it in messages and anchors
+  /// relative paths.
+  static PipelineConfig fromText(const std::string& text, const std::string& file,
+                                 const PipelineOverrides& overrides,
+                                 const PluginRegistry& registry);
+
+  std::string file;
+  std::vector<StageConfig> stages;  ///< stages[0] is the source
+  std::shared_ptr<mrpt::config::CConfigFileMemory> ini;
+};
+
+/// Strips inline comments (" ;" and " #"), expands ${VAR} from the environment. Throws
+/// ConfigError naming file and line for an unset variable.
+std::string preprocessPipelineText(const std::string& text, const std::string& file);
+
+}  // namespace pedtrack

@@ -1,0 +1,99 @@
+#pragma once
+// The plugin contract. A plugin is a shared library exporting three C symbols (made by
+// PEDTRACK_PLUGIN below): its API version and name as plain C values the loader can read from a
+// library built against any framework version, and a PluginDescriptor that only a library of
+// this API version may be asked for.
+#include <boost/config.hpp>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pedtrack/frame.h"
+#include "pedtrack/params.h"
+#include "pedtrack/version.h"
+
+namespace mrpt::config {
+class CConfigFileBase;
+}
+
+namespace pedtrack {
+
+enum class Category { Sensor, Segmenter, Classifier, Tracker };
+const char* toString(Category c);
+
+class Plugin {
+ public:
+  virtual ~Plugin();
+  /// Called once after the last frame, before outputs are closed.
+  virtual void finish() {}
+};
+
+/// A source of frames: a device, a log replay, a simulator.
+class Sensor : public Plugin {
+ public:
+  ~Sensor() override;
+  /// Fills `frame` (observations, t, poses) and returns true, or returns false at the end of the
+  /// stream. Throws DataError for unreadable data, naming the entry at fault.
+  virtual bool next(Frame& frame) = 0;
+  /// Fraction of the input consumed in [0, 1], or a negative value when unknown (live devices).
+  virtual double progress() const { return -1; }
+};
+
+/// A processing stage: segmenters add clusters, classifiers detections, trackers tracks.
+class Stage : public Plugin {
+ public:
+  ~Stage() override;
+  virtual void process(Frame& frame) = 0;
+};
+class Segmenter : public Stage {
+ public:
+  ~Segmenter() override;
+};
+class Classifier : public Stage {
+ public:
+  ~Classifier() override;
+};
+class Tracker : public Stage {
+ public:
+  ~Tracker() override;
+};
+
+/// What a plugin receives when it is created.
+struct PluginContext {
+  ParamSet params;  ///< validated values of its declared parameters
+  /// The whole pipeline configuration and the plugin's section, for plugins that hand their
+  /// section to MRPT (mrpt_sensor passes MRPT driver keys through).
+  const mrpt::config::CConfigFileBase* config = nullptr;
+  std::string section;
+};
+
+struct PluginDescriptor {
+  std::string name;
+  Category category = Category::Segmenter;
+  std::string doc;  ///< one line
+  std::vector<ParamSpec> params;
+  /// When true, keys that are not declared are accepted and left to the plugin (MRPT drivers).
+  bool accepts_other_keys = false;
+  std::function<std::unique_ptr<Plugin>(const PluginContext&)> create;
+};
+
+}  // namespace pedtrack
+
+/// Exports a plugin. DESCRIBE is a function returning its PluginDescriptor; NAME a string literal.
+#define PEDTRACK_PLUGIN(NAME, DESCRIBE)                               \
+  extern "C" BOOST_SYMBOL_EXPORT int pedtrack_plugin_api_version() {  \
+    return PEDTRACK_API_VERSION;                                      \
+  }                                                                   \
+  extern "C" BOOST_SYMBOL_EXPORT const char* pedtrack_plugin_name() { \
+    return NAME;                                                      \
+  }                                                                   \
+  extern "C" BOOST_SYMBOL_EXPORT const ::pedtrack::PluginDescriptor*  \
+  pedtrack_plugin_descriptor() {                                      \
+    static const ::pedtrack::PluginDescriptor d = [] {                \
+      auto x = DESCRIBE();                                            \
+      x.name = NAME;                                                  \
+      return x;                                                       \
+    }();                                                              \
+    return &d;                                                        \
+  }

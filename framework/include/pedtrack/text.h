@@ -1,0 +1,15 @@
+#pragma once
+// Small string helpers shared by the host, the framework and plugins.
+#include <string>
+#include <vector>
+
+namespace pedtrack {
+
+std::string trim(const std::string& s);
+/// Splits on white space and commas, dropping empty items.
+std::vector<std::string> splitList(const std::string& s);
+/// The message of an exception in one line: MRPT exceptions carry a multi-line call trace whose
+/// last non-empty line is the actual message.
+std::string oneLine(const std::string& what);
+
+}  // namespace pedtrack

@@ -1,0 +1,33 @@
+#include "pedtrack/frame.h"
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/obs/CObservationPointCloud.h>
+#include <mrpt/obs/CObservationRotatingScan.h>
+#include <mrpt/obs/CObservationVelodyneScan.h>
+
+namespace pedtrack {
+
+bool isRangeObservation(const mrpt::obs::CObservation& obs) {
+  using namespace mrpt::obs;
+  return IS_CLASS(obs, CObservation2DRangeScan) || IS_CLASS(obs, CObservationVelodyneScan) ||
+         IS_CLASS(obs, CObservationRotatingScan) || IS_CLASS(obs, CObservationPointCloud) ||
+         IS_CLASS(obs, CObservation3DRangeScan);
+}
+
+const mrpt::maps::CSimplePointsMap& Frame::cloud() const {
+  if (cloud_) return *cloud_;
+  auto map = std::make_shared<mrpt::maps::CSimplePointsMap>();
+  // Keep every return: MRPT's default decimates laser points closer than 2 cm, which would
+  // thin out exactly the dense leg and torso returns people produce.
+  map->insertionOptions.minDistBetweenLaserPoints = 0;
+  map->insertionOptions.also_interpolate = false;
+  map->insertionOptions.isPlanarMap = false;
+  for (const auto& obs : observations) {
+    if (obs && isRangeObservation(*obs)) map->insertObservation(*obs);
+  }
+  cloud_ = std::move(map);
+  return *cloud_;
+}
+
+}  // namespace pedtrack

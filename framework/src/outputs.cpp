@@ -1,0 +1,135 @@
+#include "pedtrack/outputs.h"
+
+#include <chrono>
+#include <cinttypes>
+#include <cstdio>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/version.h"
+
+namespace pedtrack {
+
+static double monotonicSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+const char* TracksCsvWriter::header() {
+  return "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,"
+         "model_probs,status";
+}
+
+TracksCsvWriter::TracksCsvWriter(const std::string& path) : out_(path), path_(path) {
+  if (!out_) throw DataError(path + ": cannot open for writing");
+  out_ << header() << '\n';
+  out_.flush();
+  last_flush_ = monotonicSeconds();
+}
+
+TracksCsvWriter::~TracksCsvWriter() {
+  close();
+}
+
+void TracksCsvWriter::write(const Frame& f) {
+  char buf[512];
+  for (const Track& tr : f.tracks) {
+    // Position seen from the sensor at time t (the sensor's own height, so a level sensor gives
+    // the exact planar coordinates).
+    double sx = 0, sy = 0, sz = 0;
+    f.sensor_pose.inverseComposePoint(tr.x, tr.y, f.sensor_pose.z(), sx, sy, sz);
+    int n = std::snprintf(buf, sizeof buf, "%.6f,%zu,%ld,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,", f.t,
+                          f.index, tr.id, tr.x, tr.y, sx, sy, tr.yaw, tr.vx, tr.vy);
+    out_.write(buf, n);
+    if (tr.has_shape) {
+      n = std::snprintf(buf, sizeof buf, "%.4f,%.4f,", tr.alpha, tr.beta);
+      out_.write(buf, n);
+    } else {
+      out_ << ",,";
+    }
+    if (tr.has_cov) {
+      n = std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,", tr.cov_xx, tr.cov_xy, tr.cov_yy);
+      out_.write(buf, n);
+    } else {
+      out_ << ",,,";
+    }
+    n = std::snprintf(buf, sizeof buf, "%.4f,", tr.score);
+    out_.write(buf, n);
+    for (std::size_t i = 0; i < tr.model_probs.size(); ++i) {
+      n = std::snprintf(buf, sizeof buf, "%s%.4f", i ? ";" : "", tr.model_probs[i]);
+      out_.write(buf, n);
+    }
+    out_ << ',' << tr.status << '\n';
+  }
+  const double now = monotonicSeconds();
+  if (now - last_flush_ > 1.0) {
+    out_.flush();
+    last_flush_ = now;
+  }
+}
+
+void TracksCsvWriter::close() {
+  if (out_.is_open()) {
+    out_.flush();
+    out_.close();
+  }
+}
+
+std::string jsonEscape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '"':
+        o += "\\\"";
+        break;
+      case '\\':
+        o += "\\\\";
+        break;
+      case '\n':
+        o += "\\n";
+        break;
+      case '\t':
+        o += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char b[8];
+          std::snprintf(b, sizeof b, "\\u%04x", c);
+          o += b;
+        } else {
+          o += c;
+        }
+    }
+  }
+  return o;
+}
+
+// run.json is small and flat; a JSON library would add a dependency for a dozen fields.
+void writeRunJson(const std::string& path, const RunSummary& s) {
+  FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw DataError(path + ": cannot open for writing");
+  const double fps = s.wall_time_s > 0 ? s.frames_processed / s.wall_time_s : 0;
+  std::fprintf(f, "{\n  \"pedtrack_version\": \"%s\",\n  \"api_version\": %d,\n", versionString(),
+               kApiVersion);
+  std::fprintf(f, "  \"pipeline\": \"%s\",\n  \"input\": \"%s\",\n", jsonEscape(s.pipeline).c_str(),
+               jsonEscape(s.input).c_str());
+  std::fprintf(f, "  \"status\": \"%s\",\n  \"error\": \"%s\",\n", s.status.c_str(),
+               jsonEscape(s.error).c_str());
+  std::fprintf(
+      f,
+      "  \"frames_read\": %zu,\n  \"frames_processed\": %zu,\n  \"frames_failed\": %zu,\n"
+      "  \"entries_skipped\": %zu,\n  \"wall_time_s\": %.6f,\n  \"frames_per_second\": %.1f,\n",
+      s.frames_read, s.frames_processed, s.frames_failed, s.entries_skipped, s.wall_time_s, fps);
+  std::fprintf(f, "  \"stages\": [");
+  for (std::size_t i = 0; i < s.stages.size(); ++i) {
+    const StageStats& st = s.stages[i];
+    std::fprintf(
+        f,
+        "%s\n    {\"name\": \"%s\", \"plugin\": \"%s\", \"calls\": %zu, \"mean_ms\": %.6f, "
+        "\"p50_ms\": %.6f, \"p99_ms\": %.6f, \"max_ms\": %.6f}",
+        i ? "," : "", jsonEscape(st.name()).c_str(), jsonEscape(st.plugin()).c_str(), st.calls(),
+        st.mean(), st.percentile(50), st.percentile(99), st.max());
+  }
+  std::fprintf(f, "\n  ]\n}\n");
+  std::fclose(f);
+}
+
+}  // namespace pedtrack

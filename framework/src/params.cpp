@@ -1,0 +1,217 @@
+#include "pedtrack/params.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/text.h"
+
+namespace pedtrack {
+
+const char* toString(ParamType t) {
+  switch (t) {
+    case ParamType::Bool:
+      return "bool";
+    case ParamType::Int:
+      return "int";
+    case ParamType::Double:
+      return "double";
+    case ParamType::String:
+      return "string";
+    case ParamType::Enum:
+      return "enum";
+    case ParamType::InputFile:
+      return "file";
+    case ParamType::OutputFile:
+      return "path";
+  }
+  return "?";
+}
+
+static std::string formatNumber(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+ParamSpec ParamSpec::boolean(std::string name, bool def, std::string doc) {
+  ParamSpec s;
+  s.name = std::move(name);
+  s.type = ParamType::Bool;
+  s.default_value = def ? "true" : "false";
+  s.doc = std::move(doc);
+  return s;
+}
+
+ParamSpec ParamSpec::integer(std::string name, std::optional<long> def, std::string unit,
+                             double min, double max, std::string doc) {
+  ParamSpec s;
+  s.name = std::move(name);
+  s.type = ParamType::Int;
+  if (def) s.default_value = std::to_string(*def);
+  s.unit = std::move(unit);
+  s.min = min;
+  s.max = max;
+  s.doc = std::move(doc);
+  return s;
+}
+
+ParamSpec ParamSpec::real(std::string name, std::optional<double> def, std::string unit, double min,
+                          double max, std::string doc) {
+  ParamSpec s;
+  s.name = std::move(name);
+  s.type = ParamType::Double;
+  if (def) s.default_value = formatNumber(*def);
+  s.unit = std::move(unit);
+  s.min = min;
+  s.max = max;
+  s.doc = std::move(doc);
+  return s;
+}
+
+ParamSpec ParamSpec::text(std::string name, std::optional<std::string> def, std::string doc) {
+  ParamSpec s;
+  s.name = std::move(name);
+  s.type = ParamType::String;
+  s.default_value = std::move(def);
+  s.doc = std::move(doc);
+  return s;
+}
+
+ParamSpec ParamSpec::choice(std::string name, std::string def, std::vector<std::string> choices,
+                            std::string doc) {
+  ParamSpec s;
+  s.name = std::move(name);
+  s.type = ParamType::Enum;
+  s.default_value = std::move(def);
+  s.choices = std::move(choices);
+  s.doc = std::move(doc);
+  return s;
+}
+
+ParamSpec ParamSpec::inputFile(std::string name, std::string doc) {
+  ParamSpec s;
+  s.name = std::move(name);
+  s.type = ParamType::InputFile;
+  s.doc = std::move(doc);
+  return s;
+}
+
+std::string ParamSpec::rangeText() const {
+  if (type == ParamType::Enum) {
+    std::string r = "{";
+    for (size_t i = 0; i < choices.size(); ++i) r += (i ? ", " : "") + choices[i];
+    return r + "}";
+  }
+  if (type == ParamType::Bool) return "{true, false}";
+  if ((type == ParamType::Int || type == ParamType::Double) &&
+      (std::isfinite(min) || std::isfinite(max))) {
+    return "[" + (std::isfinite(min) ? formatNumber(min) : std::string("-inf")) + ", " +
+           (std::isfinite(max) ? formatNumber(max) : std::string("inf")) + "]";
+  }
+  return "";
+}
+
+std::string validateValue(const ParamSpec& spec, const std::string& value,
+                          const std::string& where) {
+  auto fail = [&](const std::string& what) { throw ConfigError(where + ": " + what); };
+  switch (spec.type) {
+    case ParamType::Bool: {
+      std::string v = value;
+      std::transform(v.begin(), v.end(), v.begin(), ::tolower);
+      if (v == "true" || v == "1" || v == "yes" || v == "on") return "true";
+      if (v == "false" || v == "0" || v == "no" || v == "off") return "false";
+      fail("'" + value + "' is not a boolean (expected true or false)");
+    }
+    case ParamType::Int:
+    case ParamType::Double: {
+      const bool integral = spec.type == ParamType::Int;
+      std::size_t used = 0;
+      double v = 0;
+      try {
+        v = integral ? static_cast<double>(std::stol(value, &used)) : std::stod(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != value.size() || !std::isfinite(v))
+        fail("'" + value + "' is not " + (integral ? "an integer" : "a number") +
+             (spec.unit.empty() ? "" : " (" + spec.unit + ")"));
+      if (v < spec.min || v > spec.max)
+        fail(value + " is out of range " + spec.rangeText() +
+             (spec.unit.empty() ? "" : " " + spec.unit));
+      return value;
+    }
+    case ParamType::Enum:
+      if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
+        std::string hint = closestMatch(value, spec.choices);
+        fail("'" + value + "' is not one of " + spec.rangeText() +
+             (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+      }
+      return value;
+    case ParamType::InputFile:
+      if (value.empty()) fail("no file given");
+      if (!std::filesystem::exists(value)) fail("file '" + value + "' does not exist");
+      if (std::filesystem::is_directory(value)) fail("'" + value + "' is a directory, not a file");
+      return value;
+    case ParamType::String:
+    case ParamType::OutputFile:
+      return value;
+  }
+  return value;
+}
+
+// Damerau-free Levenshtein distance; keys are short, so O(n*m) is nothing.
+static std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::numeric_limits<std::size_t>::max();
+  for (const auto& c : candidates) {
+    const std::size_t d = editDistance(word, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  // Close enough: at most a third of the word wrong (and at least one edit allowed).
+  const std::size_t limit = std::max<std::size_t>(1, (word.size() + 2) / 3);
+  return best_d <= limit ? best : std::string();
+}
+
+std::string ParamSet::where(const std::string& key) const {
+  return file_ + ": [" + section_ + "] " + key;
+}
+
+const std::string& ParamSet::getString(const std::string& key) const {
+  auto it = values_.find(key);
+  if (it == values_.end())
+    throw std::logic_error("plugin reads undeclared parameter '" + key + "' of [" + section_ + "]");
+  return it->second;
+}
+
+double ParamSet::getDouble(const std::string& key) const {
+  return std::stod(getString(key));
+}
+long ParamSet::getInt(const std::string& key) const {
+  return std::stol(getString(key));
+}
+bool ParamSet::getBool(const std::string& key) const {
+  return getString(key) == "true";
+}
+
+std::vector<std::string> ParamSet::getList(const std::string& key) const {
+  return splitList(getString(key));
+}
+
+}  // namespace pedtrack

@@ -1,0 +1,126 @@
+#include "pedtrack/pipeline.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/progress.h"
+
+namespace pedtrack {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+std::unique_ptr<Plugin> create(const PipelineConfig& cfg, const StageConfig& sc) {
+  PluginContext ctx;
+  ctx.params = sc.params;
+  ctx.config = cfg.ini.get();
+  ctx.section = sc.section;
+  try {
+    return sc.descriptor->create(ctx);
+  } catch (const ConfigError& e) {
+    // Plugins name the key; the section and file are added here once for all of them.
+    const std::string what = e.what();
+    if (what.rfind(cfg.file, 0) == 0) throw;
+    throw ConfigError(cfg.file + ": [" + sc.section + "] " + what);
+  } catch (const std::exception& e) {
+    throw ConfigError(cfg.file + ": [" + sc.section + "] " + sc.descriptor->name + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+std::atomic<bool>& Pipeline::stopRequested() {
+  static std::atomic<bool> flag{false};
+  return flag;
+}
+
+Pipeline::Pipeline(const PipelineConfig& config) : config_(config) {
+  for (std::size_t i = 0; i < config.stages.size(); ++i) {
+    std::unique_ptr<Plugin> p = create(config, config.stages[i]);
+    if (i == 0) {
+      auto* s = dynamic_cast<Sensor*>(p.get());
+      if (!s)
+        throw ConfigError(config.file + ": [" + config.stages[i].section +
+                          "] plugin: not a sensor");
+      p.release();
+      source_.reset(s);
+    } else {
+      auto* s = dynamic_cast<Stage*>(p.get());
+      if (!s)
+        throw ConfigError(config.file + ": [" + config.stages[i].section + "] plugin: not a stage");
+      p.release();
+      stages_.emplace_back(s);
+    }
+  }
+}
+
+Pipeline::~Pipeline() = default;
+
+RunSummary Pipeline::run(const RunOptions& opt) {
+  RunSummary sum;
+  sum.pipeline = config_.file;
+  if (config_.stages[0].params.has("file")) sum.input = config_.stages[0].params.getString("file");
+  for (const auto& sc : config_.stages) sum.stages.emplace_back(sc.section, sc.descriptor->name);
+
+  std::unique_ptr<TracksCsvWriter> csv;
+  if (!opt.out_dir.empty()) {
+    std::filesystem::create_directories(opt.out_dir);
+    csv = std::make_unique<TracksCsvWriter>(opt.out_dir + "/tracks.csv");
+  }
+  Progress progress("run", opt.progress);
+  const auto start = Clock::now();
+  std::size_t warnings = 0;
+  Frame frame;
+  while (!stopRequested()) {
+    if (opt.max_frames >= 0 && static_cast<long>(sum.frames_read) >= opt.max_frames) break;
+    frame = Frame();
+    frame.index = sum.frames_read;
+    auto t0 = Clock::now();
+    try {
+      if (!source_->next(frame)) break;
+    } catch (const std::exception& e) {
+      sum.status = "error";
+      sum.error = e.what();
+      break;
+    }
+    sum.stages[0].add(msSince(t0));
+    ++sum.frames_read;
+    bool ok = true;
+    for (std::size_t i = 0; i < stages_.size() && ok; ++i) {
+      t0 = Clock::now();
+      try {
+        stages_[i]->process(frame);
+      } catch (const std::exception& e) {
+        // A bad frame costs that frame, never the run.
+        ok = false;
+        if (warnings++ < 10)
+          std::cerr << "warning: frame " << frame.index << ": [" << config_.stages[i + 1].section
+                    << "] " << e.what() << (warnings == 10 ? " (further warnings suppressed)" : "")
+                    << "\n";
+      }
+      sum.stages[i + 1].add(msSince(t0));
+    }
+    if (!ok) {
+      ++sum.frames_failed;
+      continue;
+    }
+    if (csv) csv->write(frame);
+    ++sum.frames_processed;
+    progress.update(sum.frames_read, source_->progress());
+  }
+  if (stopRequested() && sum.status == "ok") sum.status = "interrupted";
+  for (auto& s : stages_) s->finish();
+  source_->finish();
+  sum.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
+  progress.done(sum.frames_read);
+  if (csv) csv->close();
+  if (!opt.out_dir.empty()) writeRunJson(opt.out_dir + "/run.json", sum);
+  return sum;
+}
+
+}  // namespace pedtrack

@@ -1,0 +1,265 @@
+#include "pedtrack/pipeline_config.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/text.h"
+
+namespace fs = std::filesystem;
+
+namespace pedtrack {
+namespace {
+
+std::string firstLine(const std::string& s) {
+  return oneLine(s);
+}
+
+// Sections and keys in file order, edited by --input/--set before MRPT sees them again.
+struct IniModel {
+  std::vector<std::string> sections;
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> keys;
+
+  bool hasSection(const std::string& s) const { return keys.count(s) != 0; }
+  void set(const std::string& section, const std::string& key, const std::string& value) {
+    if (!hasSection(section)) sections.push_back(section);
+    auto& kv = keys[section];
+    for (auto& p : kv)
+      if (p.first == key) {
+        p.second = value;
+        return;
+      }
+    kv.emplace_back(key, value);
+  }
+  const std::string* get(const std::string& section, const std::string& key) const {
+    auto it = keys.find(section);
+    if (it == keys.end()) return nullptr;
+    for (const auto& p : it->second)
+      if (p.first == key) return &p.second;
+    return nullptr;
+  }
+  std::string text() const {
+    std::ostringstream os;
+    for (const auto& s : sections) {
+      os << "[" << s << "]\n";
+      for (const auto& [k, v] : keys.at(s)) os << k << " = " << v << "\n";
+    }
+    return os.str();
+  }
+};
+
+IniModel readModel(const mrpt::config::CConfigFileBase& ini) {
+  IniModel m;
+  std::vector<std::string> sections;
+  ini.getAllSections(sections);
+  for (const auto& s : sections) {
+    m.sections.push_back(s);
+    std::vector<std::string> keys;
+    ini.getAllKeys(s, keys);
+    auto& kv = m.keys[s];
+    for (const auto& k : keys) kv.emplace_back(k, trim(ini.read_string(s, k, "")));
+  }
+  return m;
+}
+
+std::string absoluteFromCwd(const std::string& p) {
+  return p.empty() ? p : fs::absolute(p).lexically_normal().string();
+}
+
+}  // namespace
+
+std::string preprocessPipelineText(const std::string& text, const std::string& file) {
+  // Names @define'd in the file are MRPT's to expand; any other ${NAME} comes from the environment.
+  std::set<std::string> defined;
+  {
+    std::istringstream is(text);
+    std::string line;
+    while (std::getline(is, line)) {
+      std::istringstream ls(trim(line));
+      std::string kw, name;
+      if (ls >> kw >> name && kw == "@define") defined.insert(name);
+    }
+  }
+  std::ostringstream out;
+  std::istringstream is(text);
+  std::string line;
+  int lineno = 0;
+  while (std::getline(is, line)) {
+    ++lineno;
+    const std::string t = trim(line);
+    if (!t.empty() && (t[0] == ';' || t[0] == '#')) {
+      out << "\n";  // keep line numbers of MRPT's own messages right
+      continue;
+    }
+    // Inline comments: ';' or '#' after white space.
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      if ((line[i] == ';' || line[i] == '#') && (line[i - 1] == ' ' || line[i - 1] == '\t')) {
+        line.resize(i);
+        break;
+      }
+    }
+    std::string expanded;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (line[i] == '$' && i + 1 < line.size() && line[i + 1] == '{') {
+        const auto close = line.find('}', i);
+        if (close == std::string::npos)
+          throw ConfigError(file + ":" + std::to_string(lineno) + ": unterminated '${'");
+        const std::string name = line.substr(i + 2, close - i - 2);
+        if (defined.count(name)) {
+          expanded += line.substr(i, close - i + 1);
+        } else if (const char* v = std::getenv(name.c_str())) {
+          expanded += v;
+        } else {
+          throw ConfigError(file + ":" + std::to_string(lineno) + ": ${" + name +
+                            "} is neither @define'd in the file nor set in the environment");
+        }
+        i = close;
+      } else {
+        expanded += line[i];
+      }
+    }
+    out << expanded << "\n";
+  }
+  return out.str();
+}
+
+PipelineConfig PipelineConfig::load(const std::string& file, const PipelineOverrides& overrides,
+                                    const PluginRegistry& registry) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec))
+    throw ConfigError(file + ": pipeline file " +
+                      (fs::exists(file, ec) ? "is not a regular file" : "not found"));
+  std::ifstream in(file);
+  if (!in) throw ConfigError(file + ": cannot read pipeline file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return fromText(ss.str(), file, overrides, registry);
+}
+
+PipelineConfig PipelineConfig::fromText(const std::string& text, const std::string& file,
+                                        const PipelineOverrides& overrides,
+                                        const PluginRegistry& registry) {
+  PipelineConfig cfg;
+  cfg.file = file;
+  IniModel model;
+  try {
+    mrpt::config::CConfigFileMemory raw(preprocessPipelineText(text, file));
+    model = readModel(raw);
+  } catch (const ConfigError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw ConfigError(file + ": " + firstLine(e.what()));
+  }
+
+  if (!model.hasSection("pipeline"))
+    throw ConfigError(file +
+                      ": no [pipeline] section (it lists the stages: `stages = source ...`)");
+  for (const auto& [k, v] : model.keys.at("pipeline"))
+    if (k != "stages")
+      throw ConfigError(file + ": [pipeline] " + k + ": unknown key (the only key is 'stages')");
+  const std::string* stages_text = model.get("pipeline", "stages");
+  if (!stages_text || trim(*stages_text).empty())
+    throw ConfigError(
+        file + ": [pipeline] stages: missing required key (the stage sections in run order)");
+  const std::vector<std::string> stage_names = splitList(*stages_text);
+
+  // Values typed on the command line are relative to the working directory, not to the file.
+  std::set<std::pair<std::string, std::string>> from_cli;
+  if (!overrides.input.empty()) {
+    const std::string source = stage_names.front();
+    const std::string ext = fs::path(overrides.input).extension().string();
+    model.keys[source].clear();
+    if (!model.hasSection(source)) model.sections.push_back(source);
+    model.set(source, "plugin", ext == ".bag" ? "rosbag" : "rawlog");
+    model.set(source, "file", absoluteFromCwd(overrides.input));
+    from_cli.insert({source, "file"});
+    if (!overrides.topic.empty()) {
+      if (ext != ".bag")
+        throw ConfigError("--topic: only a .bag input has topics ('" + overrides.input + "')");
+      model.set(source, "topic", overrides.topic);
+    }
+  } else if (!overrides.topic.empty()) {
+    throw ConfigError("--topic: goes with --input FILE.bag");
+  }
+  for (const auto& s : overrides.sets) {
+    const auto dot = s.find('.'), eq = s.find('=');
+    if (dot == std::string::npos || eq == std::string::npos || dot > eq || dot == 0 ||
+        eq == dot + 1)
+      throw ConfigError("--set '" + s + "': expected section.key=value");
+    const std::string section = s.substr(0, dot), key = s.substr(dot + 1, eq - dot - 1);
+    model.set(section, trim(key), trim(s.substr(eq + 1)));
+    from_cli.insert({section, trim(key)});
+  }
+
+  const fs::path base_dir = fs::absolute(file).parent_path();
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < stage_names.size(); ++i) {
+    const std::string& name = stage_names[i];
+    if (!seen.insert(name).second)
+      throw ConfigError(file + ": [pipeline] stages: stage '" + name + "' is listed twice");
+    if (!model.hasSection(name) || name == "pipeline") {
+      std::vector<std::string> candidates;
+      for (const auto& s : model.sections)
+        if (s != "pipeline") candidates.push_back(s);
+      const std::string hint = closestMatch(name, candidates);
+      throw ConfigError(file + ": [pipeline] stages: no section [" + name + "]" +
+                        (hint.empty() ? "" : " (did you mean [" + hint + "]?)"));
+    }
+    const std::string* plugin = model.get(name, "plugin");
+    if (!plugin || plugin->empty())
+      throw ConfigError(file + ": [" + name +
+                        "] plugin: missing required key (`pedtrack plugins` lists them)");
+    StageConfig sc;
+    sc.section = name;
+    try {
+      sc.descriptor = &registry.get(*plugin);
+    } catch (const ConfigError& e) {
+      throw ConfigError(file + ": [" + name + "] plugin: " + e.what());
+    }
+    const PluginDescriptor& d = *sc.descriptor;
+    if (i == 0 && d.category != Category::Sensor)
+      throw ConfigError(file + ": [" + name + "] plugin: the first stage must be a sensor, '" +
+                        d.name + "' is a " + toString(d.category));
+    if (i > 0 && d.category == Category::Sensor)
+      throw ConfigError(file + ": [" + name + "] plugin: '" + d.name +
+                        "' is a sensor; only the first stage may be one");
+
+    sc.params = ParamSet(file, name);
+    std::vector<std::string> declared;
+    for (const auto& p : d.params) declared.push_back(p.name);
+    for (const auto& [key, value] : model.keys.at(name)) {
+      if (key == "plugin") continue;
+      if (std::find(declared.begin(), declared.end(), key) != declared.end()) continue;
+      if (d.accepts_other_keys) continue;
+      const std::string hint = closestMatch(key, declared);
+      throw ConfigError(file + ": [" + name + "] " + key + ": unknown key for plugin '" + d.name +
+                        "'" +
+                        (hint.empty() ? " (`pedtrack plugins " + d.name + "` lists its keys)"
+                                      : " (did you mean '" + hint + "'?)"));
+    }
+    for (const auto& spec : d.params) {
+      const std::string* given = model.get(name, spec.name);
+      const std::string where = sc.params.where(spec.name);
+      if (!given) {
+        if (spec.required()) throw ConfigError(where + ": missing required key (" + spec.doc + ")");
+        sc.params.set(spec.name, *spec.default_value);
+        continue;
+      }
+      std::string value = *given;
+      if ((spec.type == ParamType::InputFile || spec.type == ParamType::OutputFile) &&
+          !value.empty() && fs::path(value).is_relative() && !from_cli.count({name, spec.name}))
+        value = (base_dir / value).lexically_normal().string();
+      sc.params.set(spec.name, validateValue(spec, value, where));
+    }
+    cfg.stages.push_back(std::move(sc));
+  }
+  cfg.ini = std::make_shared<mrpt::config::CConfigFileMemory>(model.text());
+  return cfg;
+}
+
+}  // namespace pedtrack

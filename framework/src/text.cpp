@@ -1,0 +1,41 @@
+#include "pedtrack/text.h"
+
+namespace pedtrack {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : s + ",") {
+    if (c == ',' || c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  return out;
+}
+
+std::string oneLine(const std::string& what) {
+  std::string last;
+  std::string cur;
+  for (char c : what + "\n") {
+    if (c == '\n') {
+      const std::string t = trim(cur);
+      if (!t.empty()) last = t;
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  return last.empty() ? trim(what) : last;
+}
+
+}  // namespace pedtrack

@@ -1,0 +1,56 @@
+// pedtrack: the host program. Subcommands load plugins and run pipelines.
+#include <mrpt/core/exceptions.h>
+
+#include <cstring>
+#include <iostream>
+
+#include "commands.h"
+#include "pedtrack/errors.h"
+#include "pedtrack/text.h"
+#include "pedtrack/version.h"
+
+namespace {
+
+const char* kUsage =
+    "pedtrack — find and track pedestrians in LiDAR data\n"
+    "\n"
+    "usage: pedtrack <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  run PIPELINE.ini   run a pipeline (--input FILE replays a rawlog or bag through it)\n"
+    "  plugins [NAME]     list plugins, or show every parameter of one\n"
+    "  import INPUT       convert a ROS1 bag or rawlog to a rawlog (--topic selects topics)\n"
+    "  bench              measure replay throughput (Release build)\n"
+    "\n"
+    "`pedtrack <command> --help` shows a command's options. Exit codes: 0 success, 1 failure\n"
+    "while running, 2 bad input (pipeline file, option, missing file).\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace pedtrack;
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    std::cout << kUsage;
+    return argc < 2 ? exit_code::kBadInput : exit_code::kOk;
+  }
+  if (!std::strcmp(argv[1], "--version")) {
+    std::cout << "pedtrack " << versionString() << " (plugin API " << kApiVersion << ")\n";
+    return 0;
+  }
+  const std::string cmd = argv[1];
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  try {
+    if (cmd == "run") return cli::runCommand(args);
+    if (cmd == "plugins") return cli::pluginsCommand(args);
+    if (cmd == "import") return cli::importCommand(args);
+    if (cmd == "bench") return cli::benchCommand(args);
+    std::cerr << "error: unknown command '" << cmd << "' (see `pedtrack --help`)\n";
+    return exit_code::kBadInput;
+  } catch (const ConfigError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return exit_code::kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << oneLine(e.what()) << "\n";
+    return exit_code::kFailure;
+  }
+}

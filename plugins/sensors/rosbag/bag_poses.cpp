@@ -1,0 +1,105 @@
+#include "bag_poses.h"
+
+#include <mrpt/poses/CPose3DQuat.h>
+#include <mrpt/ros1bridge/pose.h>
+#include <nav_msgs/Odometry.h>
+#include <rosbag/view.h>
+#include <tf2/exceptions.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <algorithm>
+#include <iostream>
+
+namespace pedtrack::rosbag_source {
+namespace {
+
+mrpt::poses::CPose3D toPose(const geometry_msgs::TransformStamped& t) {
+  const auto& q = t.transform.rotation;
+  const auto& p = t.transform.translation;
+  return mrpt::poses::CPose3D(
+      mrpt::poses::CPose3DQuat(p.x, p.y, p.z, mrpt::math::CQuaternionDouble(q.w, q.x, q.y, q.z)));
+}
+
+}  // namespace
+
+BagPoses::BagPoses(const rosbag::Bag& bag, std::string fixed_frame, std::string base_frame,
+                   const std::string& odom_topic)
+    : fixed_(std::move(fixed_frame)), base_(std::move(base_frame)) {
+  rosbag::View all(bag);
+  // Keep the whole bag's history: scans are looked up at their own stamps.
+  const double span = std::max(1.0, (all.getEndTime() - all.getBeginTime()).toSec() + 10.0);
+  tf_ = std::make_unique<tf2::BufferCore>(ros::Duration(span));
+  rosbag::View tf_view(
+      bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static", "tf", "tf_static"}));
+  for (const rosbag::MessageInstance& m : tf_view) {
+    auto msg = m.instantiate<tf2_msgs::TFMessage>();
+    if (!msg) continue;
+    const bool is_static = m.getTopic().find("tf_static") != std::string::npos;
+    for (const auto& t : msg->transforms) {
+      if (tf_->setTransform(t, "bag", is_static)) ++tf_count_;
+    }
+  }
+  if (!odom_topic.empty()) {
+    rosbag::View odom_view(bag, rosbag::TopicQuery(odom_topic));
+    for (const rosbag::MessageInstance& m : odom_view) {
+      auto msg = m.instantiate<nav_msgs::Odometry>();
+      if (msg) odom_.emplace_back(msg->header.stamp, mrpt::ros1bridge::fromROS(msg->pose.pose));
+    }
+    std::stable_sort(odom_.begin(), odom_.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+}
+
+bool BagPoses::tryTf(const std::string& target, const std::string& source, const ros::Time& t,
+                     mrpt::poses::CPose3D& out) const {
+  if (tf_count_ == 0) return false;
+  try {
+    out = toPose(tf_->lookupTransform(target, source, t));
+    return true;
+  } catch (const tf2::TransformException&) {
+    return false;
+  }
+}
+
+bool BagPoses::odomAt(const ros::Time& t, mrpt::poses::CPose3D& out) const {
+  if (odom_.empty()) return false;
+  // The last odometry at or before t (the first one before the odometry starts).
+  auto it = std::upper_bound(odom_.begin(), odom_.end(), t,
+                             [](const ros::Time& v, const auto& e) { return v < e.first; });
+  out = (it == odom_.begin() ? it : std::prev(it))->second;
+  return true;
+}
+
+void BagPoses::warnOnce(const std::string& msg) {
+  if (std::find(warned_.begin(), warned_.end(), msg) != warned_.end()) return;
+  warned_.push_back(msg);
+  std::cerr << "warning: " << msg << "\n";
+}
+
+void BagPoses::lookup(const std::string& sensor_frame, const ros::Time& stamp,
+                      mrpt::poses::CPose3D& robot, mrpt::poses::CPose3D& mount) {
+  std::string base = base_;
+  // Mounting transforms are static in practice: accept the latest when the stamp misses.
+  if (!tryTf(base_, sensor_frame, stamp, mount) &&
+      !tryTf(base_, sensor_frame, ros::Time(0), mount)) {
+    mount = mrpt::poses::CPose3D();
+    base = sensor_frame;
+    if (tf_count_ > 0 && sensor_frame != base_)
+      warnOnce("no tf from '" + base_ + "' to sensor frame '" + sensor_frame +
+               "': the sensor frame is taken as the robot frame");
+  }
+  if (tryTf(fixed_, base, stamp, robot)) {
+    last_robot_ = robot;
+  } else if (odomAt(stamp, robot)) {
+    last_robot_ = robot;
+  } else {
+    robot = last_robot_;
+    if (tf_count_ == 0 && odom_.empty())
+      warnOnce("the bag has neither /tf nor odometry: the sensor is taken as static");
+    else
+      warnOnce("no tf from '" + fixed_ + "' to '" + base +
+               "' at some scans: the last known pose is used");
+  }
+}
+
+}  // namespace pedtrack::rosbag_source
