@@ -114,16 +114,20 @@ std::string ParamSpec::rangeText() const {
   return "";
 }
 
+[[noreturn]] static void failAt(const std::string& where, const std::string& what) {
+  throw ConfigError(where + ": " + what);
+}
+
 std::string validateValue(const ParamSpec& spec, const std::string& value,
                           const std::string& where) {
-  auto fail = [&](const std::string& what) { throw ConfigError(where + ": " + what); };
+  auto fail = [&](const std::string& what) { failAt(where, what); };
   switch (spec.type) {
     case ParamType::Bool: {
       std::string v = value;
       std::transform(v.begin(), v.end(), v.begin(), ::tolower);
       if (v == "true" || v == "1" || v == "yes" || v == "on") return "true";
       if (v == "false" || v == "0" || v == "no" || v == "off") return "false";
-      fail("'" + value + "' is not a boolean (expected true or false)");
+      failAt(where, "'" + value + "' is not a boolean (expected true or false)");
     }
     case ParamType::Int:
     case ParamType::Double: {

@@ -116,6 +116,7 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   if (stopRequested() && sum.status == "ok") sum.status = "interrupted";
   for (auto& s : stages_) s->finish();
   source_->finish();
+  sum.entries_skipped = source_->entriesSkipped();
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   progress.done(sum.frames_read);
   if (csv) csv->close();

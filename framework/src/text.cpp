@@ -24,6 +24,12 @@ std::vector<std::string> splitList(const std::string& s) {
 }
 
 std::string oneLine(const std::string& what) {
+  // MRPT: "==== MRPT exception ====\nMessage:  <text>\nLocation: ...\nCall stack backtrace:..."
+  const auto m = what.find("Message:");
+  if (m != std::string::npos) {
+    const auto end = what.find('\n', m);
+    return trim(what.substr(m + 8, end == std::string::npos ? std::string::npos : end - m - 8));
+  }
   std::string last;
   std::string cur;
   for (char c : what + "\n") {

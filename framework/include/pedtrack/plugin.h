@@ -38,6 +38,8 @@ class Sensor : public Plugin {
   virtual bool next(Frame& frame) = 0;
   /// Fraction of the input consumed in [0, 1], or a negative value when unknown (live devices).
   virtual double progress() const { return -1; }
+  /// Bad input entries skipped so far (sources with a skip option), reported in run.json.
+  virtual std::size_t entriesSkipped() const { return 0; }
 };
 
 /// A processing stage: segmenters add clusters, classifiers detections, trackers tracks.

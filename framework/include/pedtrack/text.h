@@ -8,8 +8,8 @@ namespace pedtrack {
 std::string trim(const std::string& s);
 /// Splits on white space and commas, dropping empty items.
 std::vector<std::string> splitList(const std::string& s);
-/// The message of an exception in one line: MRPT exceptions carry a multi-line call trace whose
-/// last non-empty line is the actual message.
+/// The message of an exception in one line: MRPT exceptions carry a multi-line header, location
+/// and call trace around their "Message:" line; other multi-line texts give their last line.
 std::string oneLine(const std::string& what);
 
 }  // namespace pedtrack

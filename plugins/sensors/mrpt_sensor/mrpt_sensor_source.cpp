@@ -39,18 +39,23 @@ class MrptSensorSource : public Sensor {
   bool next(Frame& frame) override {
     auto last_data = std::chrono::steady_clock::now();
     while (queue_.empty()) {
+      // A driver that stopped (device lost, or the end of a pcap/file input) ends the stream once
+      // everything it produced has been handed out.
+      if (stopped_) {
+        if (end_on_idle_) return false;
+        throw DataError(driver_ + ": the driver reports an error state");
+      }
       try {
         sensor_->doProcess();
       } catch (const std::exception& e) {
         throw DataError(driver_ + ": " + oneLine(e.what()));
       }
-      if (sensor_->getState() == mrpt::hwdrivers::CGenericSensor::ssError)
-        throw DataError(driver_ + ": the driver reports an error state");
+      stopped_ = sensor_->getState() == mrpt::hwdrivers::CGenericSensor::ssError;
       for (const auto& [stamp, obj] : sensor_->getObservations()) {
         auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj);
         if (obs && isRangeObservation(*obs)) queue_.push_back(obs);
       }
-      if (!queue_.empty()) break;
+      if (!queue_.empty() || stopped_) continue;
       const double idle =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - last_data).count();
       if (idle_timeout_ > 0 && idle > idle_timeout_) {
@@ -72,6 +77,7 @@ class MrptSensorSource : public Sensor {
   double idle_timeout_;
   bool end_on_idle_;
   double period_ = 0.01;
+  bool stopped_ = false;
   mrpt::hwdrivers::CGenericSensor::Ptr sensor_;
   std::deque<mrpt::obs::CObservation::Ptr> queue_;
 };
@@ -87,9 +93,9 @@ PluginDescriptor describe() {
       ParamSpec::real(
           "idle_timeout", 10.0, "s", 0, 3600,
           "fail (or end, see end_on_idle) after this long without range data; 0: wait forever"),
-      ParamSpec::boolean(
-          "end_on_idle", false,
-          "treat idle_timeout as the end of the stream (file-backed drivers, e.g. pcap_input)"),
+      ParamSpec::boolean("end_on_idle", false,
+                         "treat idle_timeout or a stopped driver as the end of the stream (file "
+                         "inputs, e.g. pcap_input)"),
   };
   d.accepts_other_keys = true;  // everything else is the driver's own MRPT configuration
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {

@@ -66,6 +66,14 @@ bool EntryStream::resync() {
   return false;
 }
 
+bool EntryStream::atEnd() {
+  if (!pending_.empty()) return false;
+  std::uint8_t b = 0;
+  if (in_.Read(&b, 1) != 1) return true;
+  pending_.push_front(b);  // peeked, not consumed
+  return false;
+}
+
 size_t EntryStream::Write(const void*, size_t) {
   throw std::logic_error("EntryStream is read-only");
 }

@@ -25,6 +25,8 @@ class EntryStream : public mrpt::io::CStream {
   /// Rewinds to the byte after the current entry's first byte and scans forward to the next
   /// plausible object header (0x80|len, a registered MRPT class name). Returns false at EOF.
   bool resync();
+  /// True when no byte is left (a failed entry that reached it was truncated).
+  bool atEnd();
 
   size_t Read(void* buffer, size_t count) override;
   size_t Write(const void*, size_t) override;

@@ -68,6 +68,8 @@ class RawlogSource : public Sensor {
     return std::min(1.0, static_cast<double>(stream_.getPosition()) / file_size_);
   }
 
+  std::size_t entriesSkipped() const override { return skipped_; }
+
   void finish() override {
     if (skipped_) std::cerr << "warning: " << file_ << ": skipped " << skipped_ << " bad entries\n";
   }
@@ -108,7 +110,8 @@ class RawlogSource : public Sensor {
         ++entry_;
         return obj;
       } catch (const std::exception& e) {
-        const bool eof = dynamic_cast<const mrpt::serialization::CExceptionEOF*>(&e) != nullptr;
+        // MRPT wraps the end-of-file inside an object in a generic exception: ask the stream.
+        const bool eof = stream_.atEnd();
         if (eof && stream_.entryBytes() == 0) return nullptr;
         std::string what = e.what();
         what = eof ? "truncated (end of file inside the entry)" : "unreadable: " + oneLine(what);

@@ -13,6 +13,7 @@
 #include <sensor_msgs/PointCloud2.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "bag_poses.h"
@@ -60,6 +61,13 @@ class RosbagSource : public Sensor {
         if (!mrpt::ros1bridge::fromROS(*scan, mount_, *o))
           throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " +
                           m.getTopic() + ": LaserScan could not be converted");
+        // mrpt::ros1bridge drops returns beyond 95% of range_max; ROS defines a return as valid
+        // anywhere in [range_min, range_max], and a person at 5.4 m of a 5.6 m scanner is real.
+        for (std::size_t k = 0; k < scan->ranges.size(); ++k) {
+          const float r = scan->ranges[k];
+          o->setScanRangeValidity(k,
+                                  std::isfinite(r) && r >= scan->range_min && r <= scan->range_max);
+        }
         obs = o;
       } else if (auto cloud = m.instantiate<sensor_msgs::PointCloud2>()) {
         sensor_frame = cloud->header.frame_id;

@@ -1,0 +1,94 @@
+#include "test_support.h"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace pedtrack::test {
+
+static std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+CommandResult runShell(const std::string& command_line) {
+  CommandResult r;
+  FILE* p = popen((command_line + " 2>&1").c_str(), "r");
+  if (!p) throw std::runtime_error("popen failed: " + command_line);
+  char buf[4096];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+CommandResult runHost(const std::vector<std::string>& args) {
+  std::string cmd = quote(PEDTRACK_BIN);
+  for (const auto& a : args) cmd += " " + quote(a);
+  return runShell(cmd);
+}
+
+std::string freshDir(const std::string& tag) {
+  const fs::path d = fs::path(PEDTRACK_BUILD_DIR) / "Testing" / "work" / tag;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d.string();
+}
+
+std::string sharedDataDir() {
+  if (const char* env = std::getenv("PEDTRACK_DATA"); env && fs::is_directory(env)) return env;
+  const fs::path d = fs::path(PEDTRACK_SOURCE_DIR).parent_path() / "shared" / "data";
+  return fs::is_directory(d) ? d.string() : std::string();
+}
+
+std::string mrptDataset(const std::string& name) {
+  return "/usr/share/mrpt/datasets/" + name;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream is(text);
+  std::string l;
+  while (std::getline(is, l))
+    if (!l.empty()) out.push_back(l);
+  return out;
+}
+
+double jsonNumber(const std::string& json, const std::string& key) {
+  const auto k = json.find("\"" + key + "\":");
+  if (k == std::string::npos) throw std::runtime_error("run.json has no key " + key);
+  return std::stod(json.substr(k + key.size() + 3));
+}
+
+}  // namespace pedtrack::test
+
+namespace pedtrack::test {
+void requireData(const std::string& path) {
+  if (!path.empty() && fs::exists(path)) return;
+  std::printf("SKIPPED: shared data not found: %s (set PEDTRACK_DATA or clone next to ../shared)\n",
+              path.empty() ? "../shared/data" : path.c_str());
+  std::fflush(stdout);
+  std::exit(77);
+}
+}  // namespace pedtrack::test

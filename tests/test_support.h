@@ -1,0 +1,34 @@
+#pragma once
+// Helpers shared by the test files: paths, running the host binary, temporary directories.
+#include <string>
+#include <vector>
+
+namespace pedtrack::test {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  ///< stdout and stderr together
+};
+
+/// Runs `pedtrack ARGS` (arguments shell-quoted) and captures its output.
+CommandResult runHost(const std::vector<std::string>& args);
+/// Runs a shell command line and captures its output.
+CommandResult runShell(const std::string& command_line);
+/// A fresh empty directory under the build tree's Testing/ folder, named after `tag`.
+std::string freshDir(const std::string& tag);
+/// ../shared/data (or $PEDTRACK_DATA): empty when absent.
+std::string sharedDataDir();
+std::string mrptDataset(const std::string& name);
+std::string readFile(const std::string& path);
+void writeFile(const std::string& path, const std::string& text);
+std::vector<std::string> lines(const std::string& text);
+/// A number field of run.json (flat, written by writeRunJson).
+double jsonNumber(const std::string& json, const std::string& key);
+
+}  // namespace pedtrack::test
+
+namespace pedtrack::test {
+/// Ends the test process as skipped (CTest SKIP_RETURN_CODE 77), naming the missing path, when
+/// `path` does not exist: a user's fresh clone has no ../shared/data.
+void requireData(const std::string& path);
+}  // namespace pedtrack::test
