@@ -1,6 +1,7 @@
 // Pipeline files: validation against the plugins' declarations, overrides, preprocessing.
 #include <catch2/catch.hpp>
 #include <cstdlib>
+#include <filesystem>
 
 #include "pedtrack/errors.h"
 #include "pedtrack/pipeline_config.h"
@@ -81,7 +82,7 @@ TEST_CASE("relative files resolve against the pipeline file's folder", "[config]
                     dir + "/missing.ini: pipeline file not found");
 }
 
-TEST_CASE("--set overrides and --input replaces the source", "[config]") {
+TEST_CASE("set overrides, and input replaces the source", "[config]") {
   PipelineOverrides ov;
   ov.sets = {"source.rate=realtime", "source.sensor_label = LASER"};
   auto cfg = parse(source(""), ov);
@@ -115,4 +116,22 @@ TEST_CASE("environment variables expand; unknown ones are named", "[config]") {
       errorOf("[pipeline]\nstages = source\n\n[source]\nfile = ${PEDTRACK_NOT_SET_ANYWHERE}/x\n") ==
       "p.ini:5: ${PEDTRACK_NOT_SET_ANYWHERE} is neither @define'd in the file nor set in the "
       "environment");
+}
+
+TEST_CASE("every shipped pipeline in configs/ validates", "[config]") {
+  const std::string data = sharedDataDir();
+  if (!data.empty()) setenv("PEDTRACK_DATA", data.c_str(), 1);
+  int checked = 0;
+  for (const auto& e : std::filesystem::directory_iterator(PEDTRACK_SOURCE_DIR "/configs")) {
+    if (e.path().extension() != ".ini") continue;
+    const std::string text = readFile(e.path().string());
+    if (data.empty() && text.find("${PEDTRACK_DATA}") != std::string::npos) {
+      WARN("skipped " << e.path() << ": needs ../shared/data");
+      continue;
+    }
+    INFO(e.path());
+    CHECK_NOTHROW(PipelineConfig::load(e.path().string(), {}, registry()));
+    ++checked;
+  }
+  CHECK(checked >= 3);
 }

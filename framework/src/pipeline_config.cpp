@@ -113,7 +113,11 @@ std::string preprocessPipelineText(const std::string& text, const std::string& f
         if (defined.count(name)) {
           expanded += line.substr(i, close - i + 1);
         } else if (const char* v = std::getenv(name.c_str())) {
-          expanded += v;
+          // A relative path set in the shell means relative to the shell's directory, not to
+          // the pipeline file's: make it absolute before file keys are resolved.
+          std::error_code ec;
+          const bool relative_dir = v[0] != '\0' && v[0] != '/' && fs::exists(v, ec);
+          expanded += relative_dir ? fs::absolute(v).lexically_normal().string() : std::string(v);
         } else {
           throw ConfigError(file + ":" + std::to_string(lineno) + ": ${" + name +
                             "} is neither @define'd in the file nor set in the environment");
