@@ -18,11 +18,6 @@ using namespace pedtrack::test;
 
 namespace {
 
-const PluginRegistry& registry() {
-  static PluginRegistry r({PEDTRACK_TEST_PLUGIN_DIR});
-  return r;
-}
-
 template <typename T>
 void put(std::ofstream& f, T v) {
   f.write(reinterpret_cast<const char*>(&v), sizeof v);
@@ -85,11 +80,7 @@ TEST_CASE("mrpt_sensor runs CVelodyneScanner from an unchanged rawlog-grabber se
       dir +
       "/vlp16.pcap\npcap_read_once = true\npcap_read_fast = true\n"
       "pose_z = 1.2\n";
-  const auto cfg = PipelineConfig::fromText(ini, "grabber.ini", {}, registry());
-  Pipeline p(cfg);
-  std::vector<Frame> frames;
-  Frame f;
-  while (p.source().next(f)) frames.push_back(f), f = Frame();
+  const std::vector<Frame> frames = readAllFrames(ini, "grabber.ini");
   REQUIRE(frames.size() >= 1);
   const auto* scan =
       dynamic_cast<const mrpt::obs::CObservationVelodyneScan*>(frames[0].observations[0].get());
@@ -102,7 +93,7 @@ TEST_CASE("mrpt_sensor runs CVelodyneScanner from an unchanged rawlog-grabber se
 TEST_CASE("mrpt_sensor names an unknown driver class", "[mrpt_sensor]") {
   const std::string ini =
       "[pipeline]\nstages = s\n[s]\nplugin = mrpt_sensor\ndriver = CNoSuchScanner\n";
-  const auto cfg = PipelineConfig::fromText(ini, "g.ini", {}, registry());
+  const auto cfg = PipelineConfig::fromText(ini, "g.ini", {}, testRegistry());
   CHECK_THROWS_WITH(
       Pipeline(cfg),
       Catch::StartsWith("g.ini: [s] driver: 'CNoSuchScanner' is not an MRPT sensor class"));

@@ -12,15 +12,10 @@ using namespace pedtrack::test;
 
 namespace {
 
-const PluginRegistry& registry() {
-  static PluginRegistry r({PEDTRACK_TEST_PLUGIN_DIR});
-  return r;
-}
-
 const std::string kSena = mrptDataset("2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
 
 PipelineConfig parse(const std::string& text, const PipelineOverrides& ov = {}) {
-  return PipelineConfig::fromText(text, "p.ini", ov, registry());
+  return PipelineConfig::fromText(text, "p.ini", ov, testRegistry());
 }
 
 std::string errorOf(const std::string& text, const PipelineOverrides& ov = {}) {
@@ -76,9 +71,9 @@ TEST_CASE("relative files resolve against the pipeline file's folder", "[config]
   writeFile(dir + "/walk.rawlog", readFile(kSena));
   writeFile(dir + "/p.ini",
             "[pipeline]\nstages = source\n[source]\nplugin = rawlog\nfile = walk.rawlog\n");
-  const auto cfg = PipelineConfig::load(dir + "/p.ini", {}, registry());
+  const auto cfg = PipelineConfig::load(dir + "/p.ini", {}, testRegistry());
   CHECK(cfg.stages[0].params.getString("file") == dir + "/walk.rawlog");
-  CHECK_THROWS_WITH(PipelineConfig::load(dir + "/missing.ini", {}, registry()),
+  CHECK_THROWS_WITH(PipelineConfig::load(dir + "/missing.ini", {}, testRegistry()),
                     dir + "/missing.ini: pipeline file not found");
 }
 
@@ -130,7 +125,7 @@ TEST_CASE("every shipped pipeline in configs/ validates", "[config]") {
       continue;
     }
     INFO(e.path());
-    CHECK_NOTHROW(PipelineConfig::load(e.path().string(), {}, registry()));
+    CHECK_NOTHROW(PipelineConfig::load(e.path().string(), {}, testRegistry()));
     ++checked;
   }
   CHECK(checked >= 3);

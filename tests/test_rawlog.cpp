@@ -14,27 +14,23 @@ using namespace pedtrack::test;
 
 namespace {
 
-const PluginRegistry& registry() {
-  static PluginRegistry r({PEDTRACK_TEST_PLUGIN_DIR});
-  return r;
-}
-
 const std::string kSena = mrptDataset("2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
 
-RunSummary replay(const std::string& file, const std::string& extra = "",
-                  std::vector<Frame>* frames = nullptr) {
-  const auto cfg = PipelineConfig::fromText(
-      "[pipeline]\nstages = source\n[source]\nplugin = rawlog\nfile = " + file + "\n" + extra,
-      "t.ini", {}, registry());
+std::string rawlogPipeline(const std::string& file, const std::string& extra) {
+  return "[pipeline]\nstages = source\n[source]\nplugin = rawlog\nfile = " + file + "\n" + extra;
+}
+
+RunSummary replay(const std::string& file, const std::string& extra = "") {
+  const auto cfg =
+      PipelineConfig::fromText(rawlogPipeline(file, extra), "t.ini", {}, testRegistry());
   Pipeline p(cfg);
-  if (frames) {
-    Frame f;
-    while (p.source().next(f)) frames->push_back(f), f = Frame();
-    return {};
-  }
   RunOptions o;
   o.progress = false;
   return p.run(o);
+}
+
+std::vector<Frame> readFrames(const std::string& file) {
+  return readAllFrames(rawlogPipeline(file, ""));
 }
 
 // SENA re-written uncompressed, with the byte offset where each entry starts.
@@ -89,8 +85,7 @@ TEST_CASE("MRPT sample logs replay with the right number of frames", "[rawlog]")
 }
 
 TEST_CASE("odometry actions move the robot and timestamps increase", "[rawlog]") {
-  std::vector<Frame> frames;
-  replay(kSena, "", &frames);
+  const std::vector<Frame> frames = readFrames(kSena);
   REQUIRE(frames.size() == 225);
   CHECK(frames.front().robot_pose.norm() == 0);  // before the first action
   double travelled = 0;
@@ -148,9 +143,7 @@ TEST_CASE("plain and gz-compressed logs give the same frames", "[rawlog]") {
   const PlainLog log = plainSena();
   const std::string dir = freshDir("rawlog_plain_vs_gz");
   writeFile(dir + "/plain.rawlog", log.bytes);
-  std::vector<Frame> a, b;
-  replay(dir + "/plain.rawlog", "", &a);
-  replay(kSena, "", &b);
+  const std::vector<Frame> a = readFrames(dir + "/plain.rawlog"), b = readFrames(kSena);
   REQUIRE(a.size() == b.size());
   CHECK(a.back().t == b.back().t);
   CHECK(a.back().cloud().size() == b.back().cloud().size());

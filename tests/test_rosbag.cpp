@@ -16,11 +16,6 @@ using namespace pedtrack::test;
 
 namespace {
 
-const PluginRegistry& registry() {
-  static PluginRegistry r({PEDTRACK_TEST_PLUGIN_DIR});
-  return r;
-}
-
 std::string demoBag() {
   const std::string data = sharedDataDir();
   const std::string bag =
@@ -31,15 +26,8 @@ std::string demoBag() {
 
 std::vector<Frame> replay(const std::string& plugin, const std::string& file,
                           const std::string& extra = "") {
-  const auto cfg =
-      PipelineConfig::fromText("[pipeline]\nstages = source\n[source]\nplugin = " + plugin +
-                                   "\nfile = " + file + "\n" + extra,
-                               "t.ini", {}, registry());
-  Pipeline p(cfg);
-  std::vector<Frame> frames;
-  Frame f;
-  while (p.source().next(f)) frames.push_back(f), f = Frame();
-  return frames;
+  return readAllFrames("[pipeline]\nstages = source\n[source]\nplugin = " + plugin +
+                       "\nfile = " + file + "\n" + extra);
 }
 
 // The bag's own LaserScan messages, read with rosbag_storage alone.

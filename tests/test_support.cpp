@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "pedtrack/pipeline.h"
+
 namespace fs = std::filesystem;
 
 namespace pedtrack::test {
@@ -90,5 +92,21 @@ void requireData(const std::string& path) {
               path.empty() ? "../shared/data" : path.c_str());
   std::fflush(stdout);
   std::exit(77);
+}
+}  // namespace pedtrack::test
+
+namespace pedtrack::test {
+const PluginRegistry& testRegistry() {
+  static PluginRegistry r({PEDTRACK_TEST_PLUGIN_DIR});
+  return r;
+}
+
+std::vector<Frame> readAllFrames(const std::string& pipeline_text, const std::string& file) {
+  const auto cfg = PipelineConfig::fromText(pipeline_text, file, {}, testRegistry());
+  Pipeline p(cfg);
+  std::vector<Frame> frames;
+  Frame f;
+  while (p.source().next(f)) frames.push_back(f), f = Frame();
+  return frames;
 }
 }  // namespace pedtrack::test

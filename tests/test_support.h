@@ -1,4 +1,6 @@
 #pragma once
+#include "pedtrack/frame.h"
+#include "pedtrack/plugin_registry.h"
 // Helpers shared by the test files: paths, running the host binary, temporary directories.
 #include <string>
 #include <vector>
@@ -31,4 +33,12 @@ namespace pedtrack::test {
 /// Ends the test process as skipped (CTest SKIP_RETURN_CODE 77), naming the missing path, when
 /// `path` does not exist: a user's fresh clone has no ../shared/data.
 void requireData(const std::string& path);
+}  // namespace pedtrack::test
+
+namespace pedtrack::test {
+/// The plugins of this build tree.
+const PluginRegistry& testRegistry();
+/// Every frame the source of `pipeline_text` yields (`file` names it in messages).
+std::vector<Frame> readAllFrames(const std::string& pipeline_text,
+                                 const std::string& file = "t.ini");
 }  // namespace pedtrack::test
