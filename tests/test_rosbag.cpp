@@ -1,8 +1,10 @@
 // The rosbag source on the real leg_tracker bag, and `pedtrack import` of it to a rawlog.
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -100,4 +102,78 @@ TEST_CASE("pedtrack import writes the bag as a rawlog that rawlog-edit and the r
       info.output,
       Catch::Matches("(.|\n)*Sensor \\(Label/Occurs/Rate/Durat\\.\\) : +/scan / +1265 /(.|\n)*"));
   checkSameRanges(replay("rawlog", out), bagScans(bag));
+}
+
+namespace {
+
+// A small bag: a robot driving along x at 1 m/s (odom → base_link on /tf, or nav_msgs/Odometry on
+// /odom), a laser mounted at (0.2, 0, 0.3) on it (/tf_static), and a 10 Hz LaserScan.
+std::string writeMovingRobotBag(const std::string& path, bool use_tf) {
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  const double t0 = 1600000000.0;
+  tf2_msgs::TFMessage mount;
+  geometry_msgs::TransformStamped m;
+  m.header.stamp = ros::Time(t0);
+  m.header.frame_id = "base_link";
+  m.child_frame_id = "laser";
+  m.transform.translation.x = 0.2;
+  m.transform.translation.z = 0.3;
+  m.transform.rotation.w = 1;
+  mount.transforms.push_back(m);
+  if (use_tf) bag.write("/tf_static", ros::Time(t0), mount);
+  for (int k = 0; k <= 40; ++k) {  // pose messages every 50 ms
+    const ros::Time t(t0 + 0.05 * k);
+    if (use_tf) {
+      tf2_msgs::TFMessage tf;
+      geometry_msgs::TransformStamped p;
+      p.header.stamp = t;
+      p.header.frame_id = "odom";
+      p.child_frame_id = "base_link";
+      p.transform.translation.x = 0.05 * k;
+      p.transform.rotation.w = 1;
+      tf.transforms.push_back(p);
+      bag.write("/tf", t, tf);
+    } else {
+      nav_msgs::Odometry o;
+      o.header.stamp = t;
+      o.header.frame_id = "odom";
+      o.pose.pose.position.x = 0.05 * k;
+      o.pose.pose.orientation.w = 1;
+      bag.write("/odom", t, o);
+    }
+  }
+  for (int k = 1; k <= 15; ++k) {  // scans at 10 Hz, stamped between pose messages
+    sensor_msgs::LaserScan s;
+    s.header.stamp = ros::Time(t0 + 0.1 * k + 0.025);
+    s.header.frame_id = use_tf ? "laser" : "base_link";
+    s.angle_min = -1.5;
+    s.angle_max = 1.5;
+    s.angle_increment = 0.01;
+    s.range_min = 0.1;
+    s.range_max = 10;
+    s.ranges.assign(301, 3.0f);
+    bag.write("/scan", s.header.stamp, s);
+  }
+  bag.close();
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("robot poses come from interpolated /tf with the sensor mounting or else from /odom",
+          "[rosbag]") {
+  const std::string dir = freshDir("rosbag_tf");
+  const auto tf_frames = replay("rosbag", writeMovingRobotBag(dir + "/tf.bag", true));
+  REQUIRE(tf_frames.size() == 15);
+  for (std::size_t i = 0; i < tf_frames.size(); ++i) {
+    const double x = 0.1 * (i + 1) + 0.025;  // 1 m/s along x, interpolated between tf messages
+    CHECK(tf_frames[i].robot_pose.x() == Approx(x).margin(1e-6));
+    CHECK(tf_frames[i].sensor_pose.x() == Approx(x + 0.2).margin(1e-6));
+    CHECK(tf_frames[i].sensor_pose.z() == Approx(0.3).margin(1e-6));
+  }
+  const auto odom_frames = replay("rosbag", writeMovingRobotBag(dir + "/odom.bag", false));
+  REQUIRE(odom_frames.size() == 15);
+  // Without tf: the last odometry message at or before the scan (0.025 s earlier: 2.5 cm behind).
+  CHECK(odom_frames[4].robot_pose.x() == Approx(0.5).margin(1e-6));
+  CHECK(odom_frames[4].sensor_pose.x() == Approx(0.5).margin(1e-6));
 }
