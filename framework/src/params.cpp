@@ -24,8 +24,6 @@ const char* toString(ParamType t) {
       return "enum";
     case ParamType::InputFile:
       return "file";
-    case ParamType::OutputFile:
-      return "path";
   }
   return "?";
 }
@@ -160,7 +158,6 @@ std::string validateValue(const ParamSpec& spec, const std::string& value,
       if (std::filesystem::is_directory(value)) fail("'" + value + "' is a directory, not a file");
       return value;
     case ParamType::String:
-    case ParamType::OutputFile:
       return value;
   }
   return value;

@@ -16,10 +16,6 @@ namespace fs = std::filesystem;
 namespace pedtrack {
 namespace {
 
-std::string firstLine(const std::string& s) {
-  return oneLine(s);
-}
-
 // Sections and keys in file order, edited by --input/--set before MRPT sees them again.
 struct IniModel {
   std::vector<std::string> sections;
@@ -157,7 +153,7 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
   } catch (const ConfigError&) {
     throw;
   } catch (const std::exception& e) {
-    throw ConfigError(file + ": " + firstLine(e.what()));
+    throw ConfigError(file + ": " + oneLine(e.what()));
   }
 
   if (!model.hasSection("pipeline"))
@@ -255,8 +251,8 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
         continue;
       }
       std::string value = *given;
-      if ((spec.type == ParamType::InputFile || spec.type == ParamType::OutputFile) &&
-          !value.empty() && fs::path(value).is_relative() && !from_cli.count({name, spec.name}))
+      if (spec.type == ParamType::InputFile && !value.empty() && fs::path(value).is_relative() &&
+          !from_cli.count({name, spec.name}))
         value = (base_dir / value).lexically_normal().string();
       sc.params.set(spec.name, validateValue(spec, value, where));
     }

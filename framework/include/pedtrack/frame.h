@@ -55,8 +55,6 @@ struct Frame {
   /// Points of every range observation, in the robot frame, built on first use and cached, so a
   /// pipeline that needs no points (replay, import) never pays for them.
   const mrpt::maps::CSimplePointsMap& cloud() const;
-  /// Drops the cached cloud (call after changing `observations`).
-  void invalidateCloud() { cloud_.reset(); }
 
  private:
   mutable std::shared_ptr<mrpt::maps::CSimplePointsMap> cloud_;

@@ -9,7 +9,7 @@
 
 namespace pedtrack {
 
-enum class ParamType { Bool, Int, Double, String, Enum, InputFile, OutputFile };
+enum class ParamType { Bool, Int, Double, String, Enum, InputFile };
 const char* toString(ParamType t);
 
 struct ParamSpec {
