@@ -6,6 +6,8 @@
 #include <mrpt/obs/CObservationRotatingScan.h>
 #include <mrpt/obs/CObservationVelodyneScan.h>
 
+#include "pedtrack/velodyne_decode.h"
+
 namespace pedtrack {
 
 bool isRangeObservation(const mrpt::obs::CObservation& obs) {
@@ -24,8 +26,19 @@ const mrpt::maps::CSimplePointsMap& Frame::cloud() const {
   map->insertionOptions.also_interpolate = false;
   map->insertionOptions.isPlanarMap = false;
   for (const auto& obs : observations) {
-    if (obs && isRangeObservation(*obs)) map->insertObservation(*obs);
+    if (!obs || !isRangeObservation(*obs)) continue;
+    if (auto velo = std::dynamic_pointer_cast<mrpt::obs::CObservationVelodyneScan>(obs)) {
+      // Both firings of every VLP-16 block (see velodyne_decode.h), mounted on the robot.
+      for (const auto& p : decodeVelodyne(*velo)) {
+        double x, y, z;
+        velo->sensorPose.composePoint(p.x, p.y, p.z, x, y, z);
+        map->insertPointFast(x, y, z);
+      }
+      continue;
+    }
+    map->insertObservation(*obs);
   }
+  map->mark_as_modified();
   cloud_ = std::move(map);
   return *cloud_;
 }

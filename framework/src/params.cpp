@@ -215,4 +215,31 @@ std::vector<std::string> ParamSet::getList(const std::string& key) const {
   return splitList(getString(key));
 }
 
+ParamSet validateSection(const std::vector<ParamSpec>& specs,
+                         const std::vector<std::pair<std::string, std::string>>& given,
+                         const std::string& file, const std::string& section,
+                         const std::string& kind) {
+  ParamSet out(file, section);
+  std::vector<std::string> declared;
+  for (const auto& p : specs) declared.push_back(p.name);
+  for (const auto& [key, value] : given) {
+    if (std::find(declared.begin(), declared.end(), key) != declared.end()) continue;
+    const std::string hint = closestMatch(key, declared);
+    throw ConfigError(out.where(key) + ": unknown key for " + kind +
+                      (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+  }
+  for (const auto& spec : specs) {
+    const std::string where = out.where(spec.name);
+    auto it = std::find_if(given.begin(), given.end(),
+                           [&](const auto& kv) { return kv.first == spec.name; });
+    if (it == given.end()) {
+      if (spec.required()) throw ConfigError(where + ": missing required key (" + spec.doc + ")");
+      out.set(spec.name, *spec.default_value);
+      continue;
+    }
+    out.set(spec.name, validateValue(spec, it->second, where));
+  }
+  return out;
+}
+
 }  // namespace pedtrack

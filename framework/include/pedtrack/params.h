@@ -72,6 +72,14 @@ class ParamSet {
 std::string validateValue(const ParamSpec& spec, const std::string& value,
                           const std::string& where);
 
+/// Validates one INI section's keys against `specs`: an unknown key (with a "did you mean"), a
+/// missing required key or a bad value throws ConfigError naming file, section and key; every
+/// declared key gets its value or its default. `kind` names what the section is in messages.
+ParamSet validateSection(const std::vector<ParamSpec>& specs,
+                         const std::vector<std::pair<std::string, std::string>>& given,
+                         const std::string& file, const std::string& section,
+                         const std::string& kind);
+
 /// The closest candidate to `word` by edit distance, or "" when nothing is close enough.
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
 

@@ -1,0 +1,76 @@
+#pragma once
+// Sensor models of the simulator: which rays a scan fires (directions in the sensor frame) and
+// how a cast range image becomes the MRPT observation the real device produces.
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <Eigen/Core>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace pedtrack::sim {
+
+struct SensorSpec {
+  std::string model;                    ///< utm30lx | urg04lx | vlp16 | custom2d
+  bool is3d = false;                    ///< vlp16
+  double fov = 0;                       ///< rad (2D)
+  double resolution = 0;                ///< rad between beams (2D) or columns (VLP-16)
+  double max_range = 0, min_range = 0;  ///< m
+  double rate = 0;                      ///< Hz
+  double range_noise = 0;               ///< m, 1σ
+  double dropout = 0;                   ///< probability that a return is lost
+  std::string label;                    ///< MRPT sensorLabel
+  mrpt::poses::CPose3D mount;           ///< sensor on the robot
+};
+
+/// Datasheet defaults of a model (fov, resolution, ranges, rate, noise, label); throws
+/// ConfigError for an unknown model name.
+SensorSpec sensorDefaults(const std::string& model);
+
+/// What one scan saw: per ray (ring-major) the range along the ray and who was hit.
+struct RangeImage {
+  int rings = 0, cols = 0;
+  std::vector<double> range;  ///< m, +inf for no return
+  std::vector<int> owner;     ///< person id, kOwnerStatic or kOwnerGround
+  void reset(int r, int c);
+};
+
+/// Ray directions of one scan in the sensor frame, and the mapping from azimuth to columns used
+/// to cull primitives.
+class RayTable {
+ public:
+  explicit RayTable(const SensorSpec& spec);
+  int rings() const { return rings_; }
+  int cols() const { return cols_; }
+  const Eigen::Vector3d& dir(int ring, int col) const { return dir_[ring * cols_ + col]; }
+  double ringElevation(int ring) const { return elev_[ring]; }
+  /// Columns whose azimuth lies within `half_width` of `azimuth` (sensor frame, rad), as up to
+  /// two inclusive ranges (a wrap around 360° splits it). Returns the number of ranges.
+  int columnRanges(double azimuth, double half_width, int out[4]) const;
+
+ private:
+  int rings_ = 0, cols_ = 0;
+  bool full_circle_ = false;
+  double az0_ = 0, daz_ = 0;  ///< column c nominally at az0_ + c·daz_ (rad)
+  std::vector<Eigen::Vector3d> dir_;
+  std::vector<double> elev_;
+};
+
+/// Turns a cast range image into the device's MRPT observation, adding range noise, dropout and
+/// the device's range quantisation. Counts per owner the returns actually produced.
+class ObservationMaker {
+ public:
+  explicit ObservationMaker(const SensorSpec& spec);
+  mrpt::obs::CObservation::Ptr make(const RangeImage& img, double t, std::mt19937_64& rng,
+                                    std::vector<int>& returns_per_owner) const;
+
+ private:
+  mrpt::obs::CObservation::Ptr make2D(const RangeImage& img, double t, std::mt19937_64& rng,
+                                      std::vector<int>& counts) const;
+  mrpt::obs::CObservation::Ptr makeVelodyne(const RangeImage& img, double t, std::mt19937_64& rng,
+                                            std::vector<int>& counts) const;
+  SensorSpec spec_;
+};
+
+}  // namespace pedtrack::sim

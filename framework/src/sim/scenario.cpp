@@ -1,0 +1,316 @@
+#include "pedtrack/sim/scenario.h"
+
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/pipeline_config.h"
+#include "pedtrack/text.h"
+
+namespace pedtrack::sim {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+using KeyValues = std::vector<std::pair<std::string, std::string>>;
+
+// "person.10" after "person.9": compare digit runs by value.
+bool naturalLess(const std::string& a, const std::string& b) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (std::isdigit(static_cast<unsigned char>(a[i])) &&
+        std::isdigit(static_cast<unsigned char>(b[j]))) {
+      std::size_t i2 = i, j2 = j;
+      while (i2 < a.size() && std::isdigit(static_cast<unsigned char>(a[i2]))) ++i2;
+      while (j2 < b.size() && std::isdigit(static_cast<unsigned char>(b[j2]))) ++j2;
+      const long x = std::stol(a.substr(i, i2 - i)), y = std::stol(b.substr(j, j2 - j));
+      if (x != y) return x < y;
+      i = i2;
+      j = j2;
+    } else {
+      if (a[i] != b[j]) return a[i] < b[j];
+      ++i;
+      ++j;
+    }
+  }
+  return a.size() - i < b.size() - j;
+}
+
+std::vector<double> numbers(const ParamSet& p, const std::string& key, std::size_t n) {
+  std::vector<double> out;
+  std::string text = p.getString(key);
+  std::replace(text.begin(), text.end(), ';', ' ');
+  for (const auto& tok : splitList(text)) {
+    char* end = nullptr;
+    const double v = std::strtod(tok.c_str(), &end);
+    if (end == tok.c_str() || *end)
+      throw ConfigError(p.where(key) + ": '" + tok + "' is not a number");
+    out.push_back(v);
+  }
+  if (n && out.size() != n)
+    throw ConfigError(p.where(key) + ": expected " + std::to_string(n) + " numbers, got " +
+                      std::to_string(out.size()));
+  return out;
+}
+
+MotionLimits limits(const ParamSet& p) {
+  MotionLimits l;
+  l.speed = p.getDouble("speed");
+  l.accel = p.getDouble("accel");
+  l.turn_rate = p.getDouble("turn_rate") * kDeg;
+  l.facing_rate = p.getDouble("facing_rate") * kDeg;
+  return l;
+}
+
+BodySpec body(const ParamSet& p) {
+  BodySpec b;
+  b.alpha = p.getDouble("alpha");
+  b.beta = p.getDouble("beta");
+  b.height = p.getDouble("height");
+  b.arm_swing = p.getDouble("arm_swing") * kDeg;
+  b.step_length = p.getDouble("step_length");
+  b.step_width = p.getDouble("step_width");
+  b.leg_radius = p.getDouble("leg_radius");
+  return b;
+}
+
+std::string personScript(const ParamSet& p, unsigned long seed, int id) {
+  const std::string path = p.getString("path");
+  if (path == "still") return "";
+  if (path == "script") {
+    if (p.getString("script").empty())
+      throw ConfigError(p.where("script") + ": path = script needs a motion script");
+    return p.getString("script");
+  }
+  if (path == "waypoints") {
+    const auto v = numbers(p, "waypoints", 0);
+    if (v.empty() || v.size() % 2)
+      throw ConfigError(p.where("waypoints") + ": expected pairs 'x y; x y; ...'");
+    std::ostringstream os;
+    for (std::size_t i = 0; i < v.size(); i += 2)
+      os << (i ? "; " : "") << "goto " << v[i] << " " << v[i + 1];
+    return os.str();
+  }
+  if (path == "random") {
+    const double x = p.getDouble("x"), y = p.getDouble("y");
+    std::vector<double> a{x - 3, y - 3, x + 3, y + 3};
+    if (!p.getString("area").empty()) a = numbers(p, "area", 4);
+    return randomWalkScript(static_cast<unsigned>(seed * 7919 + id), int(p.getInt("legs")), a[0],
+                            a[1], a[2], a[3], 2.0);
+  }
+  return shapeScript(path, p.getDouble("length"), p.getDouble("radius"), p.getDouble("angle"),
+                     int(p.getInt("repeats")));
+}
+
+void addObject(Scenario& s, const std::string& type, double x, double y, const ParamSet* p,
+               double x2, double y2, double radius, double height, double yaw, double width,
+               double depth, double thickness, double crown) {
+  auto h = [&](double def) { return height > 0 ? height : def; };
+  if (type == "wall") {
+    // Split long walls into ≤1 m boxes so ray culling stays tight.
+    const double len = std::hypot(x2 - x, y2 - y);
+    if (len < 1e-6) throw ConfigError((p ? p->where("x2") : "") + ": a wall needs two ends");
+    const int n = std::max(1, static_cast<int>(std::ceil(len)));
+    const double a = std::atan2(y2 - y, x2 - x);
+    for (int i = 0; i < n; ++i) {
+      const double u = (i + 0.5) / n;
+      s.objects.push_back(Primitive::box(x + u * (x2 - x), y + u * (y2 - y), a, 0.5 * len / n,
+                                         0.5 * thickness, 0, h(2.5), kOwnerStatic));
+    }
+  } else if (type == "pole") {
+    const double r = radius > 0 ? radius : 0.05;
+    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(2.5), kOwnerStatic));
+  } else if (type == "bin") {
+    const double r = radius > 0 ? radius : 0.25;
+    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(0.9), kOwnerStatic));
+  } else if (type == "box") {
+    s.objects.push_back(
+        Primitive::box(x, y, yaw, 0.5 * width, 0.5 * depth, 0, h(0.8), kOwnerStatic));
+  } else if (type == "tree") {
+    const double r = radius > 0 ? radius : 0.15, top = h(5.0);
+    const double cr = std::min(crown, 0.5 * top);
+    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, top - cr, kOwnerStatic));
+    if (cr > 0) s.objects.push_back(Primitive::sphere({x, y, top - cr}, cr, kOwnerStatic));
+  }
+}
+
+}  // namespace
+
+Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
+                          long seed_override) {
+  const std::string text = preprocessPipelineText(raw_text, file);
+  mrpt::config::CConfigFileMemory ini(text);
+  std::vector<std::string> sections;
+  ini.getAllSections(sections);
+  std::sort(sections.begin(), sections.end(), naturalLess);
+
+  const auto& declared = scenarioKeys();
+  std::map<std::string, ParamSet> single;
+  std::vector<std::pair<std::string, ParamSet>> people, objects;
+  for (const auto& sec : sections) {
+    std::string kind = sec;
+    if (sec.rfind("person.", 0) == 0 && sec.size() > 7) kind = "person.NAME";
+    if (sec.rfind("object.", 0) == 0 && sec.size() > 7) kind = "object.NAME";
+    auto it = std::find_if(declared.begin(), declared.end(),
+                           [&](const auto& d) { return d.first == kind; });
+    if (it == declared.end()) {
+      std::vector<std::string> names;
+      for (const auto& d : declared) names.push_back(d.first);
+      const std::string hint = closestMatch(sec, names);
+      throw ConfigError(file + ": [" + sec +
+                        "]: unknown section (scenario, sensor, robot, "
+                        "ground, person.NAME, crowd, object.NAME, clutter)" +
+                        (hint.empty() ? "" : "; did you mean [" + hint + "]?"));
+    }
+    KeyValues kv;
+    std::vector<std::string> keys;
+    ini.getAllKeys(sec, keys);
+    for (const auto& k : keys) kv.emplace_back(k, trim(ini.read_string(sec, k, "")));
+    ParamSet ps = validateSection(it->second, kv, file, sec, "a [" + kind + "] section");
+    if (kind == "person.NAME")
+      people.emplace_back(sec, std::move(ps));
+    else if (kind == "object.NAME")
+      objects.emplace_back(sec, std::move(ps));
+    else
+      single.emplace(sec, std::move(ps));
+  }
+  auto section = [&](const std::string& name) -> const ParamSet& {
+    if (!single.count(name)) {
+      const auto& specs = std::find_if(declared.begin(), declared.end(), [&](const auto& d) {
+                            return d.first == name;
+                          })->second;
+      single.emplace(name, validateSection(specs, {}, file, name, "a [" + name + "] section"));
+    }
+    return single.at(name);
+  };
+  if (!single.count("scenario"))
+    throw ConfigError(file + ": [scenario] duration: missing required section and key");
+
+  Scenario s;
+  s.file = file;
+  const ParamSet& sc = section("scenario");
+  s.name = sc.getString("name").empty() ? std::filesystem::path(file).stem().string()
+                                        : sc.getString("name");
+  s.description = sc.getString("description");
+  s.duration = sc.getDouble("duration");
+  s.start_time = sc.getDouble("start_time");
+  s.seed = seed_override >= 0 ? static_cast<unsigned long>(seed_override)
+                              : static_cast<unsigned long>(sc.getInt("seed"));
+
+  // Sensor: datasheet defaults, then what the file overrides.
+  const ParamSet& se = section("sensor");
+  s.sensor = sensorDefaults(se.getString("model"));
+  if (se.getDouble("fov") > 0) s.sensor.fov = se.getDouble("fov") * kDeg;
+  if (se.getDouble("resolution") > 0) s.sensor.resolution = se.getDouble("resolution") * kDeg;
+  if (se.getDouble("max_range") > 0) s.sensor.max_range = se.getDouble("max_range");
+  if (se.getDouble("min_range") >= 0) s.sensor.min_range = se.getDouble("min_range");
+  if (se.getDouble("rate") > 0) s.sensor.rate = se.getDouble("rate");
+  if (se.getDouble("range_noise") >= 0) s.sensor.range_noise = se.getDouble("range_noise");
+  s.sensor.dropout = se.getDouble("dropout");
+  if (!se.getString("label").empty()) s.sensor.label = se.getString("label");
+  if (s.sensor.is3d && (se.getDouble("fov") > 0 || se.getDouble("resolution") > 0))
+    throw ConfigError(se.where("fov") +
+                      ": the VLP-16's geometry is fixed (fov/resolution are "
+                      "for 2D models)");
+  for (const char* k : {"fov", "resolution", "max_range", "rate"})
+    if (s.sensor.model == "custom2d" && se.getDouble(k) <= 0)
+      throw ConfigError(se.where(k) + ": required (> 0) for model custom2d");
+  s.sensor.mount = mrpt::poses::CPose3D(se.getDouble("x"), se.getDouble("y"), se.getDouble("z"),
+                                        se.getDouble("yaw") * kDeg, se.getDouble("pitch") * kDeg,
+                                        se.getDouble("roll") * kDeg);
+  s.leg_height = sc.getDouble("leg_height") >= 0 ? sc.getDouble("leg_height")
+                 : s.sensor.is3d                 ? 0.4
+                                                 : se.getDouble("z");
+
+  const ParamSet& ro = section("robot");
+  s.robot.path =
+      Trajectory::fromScript(ro.getString("script"), ro.getDouble("x"), ro.getDouble("y"),
+                             ro.getDouble("yaw") * kDeg, limits(ro), ro.where("script"));
+  s.robot.odometry_noise = ro.getDouble("odometry_noise");
+  s.robot.odometry_yaw_noise = ro.getDouble("odometry_yaw_noise");
+  s.robot.odometry_yaw_drift = ro.getDouble("odometry_yaw_drift");
+
+  const ParamSet& gr = section("ground");
+  s.ground = Ground(gr.getDouble("tilt") * kDeg, gr.getDouble("direction") * kDeg);
+
+  for (const auto& [sec, p] : people) {
+    PersonSpec ps;
+    ps.id = static_cast<int>(s.people.size()) + 1;
+    ps.section = sec;
+    ps.body = body(p);
+    ps.appear = p.getDouble("appear");
+    ps.path = Trajectory::fromScript(personScript(p, s.seed, ps.id), p.getDouble("x"),
+                                     p.getDouble("y"), p.getDouble("yaw") * kDeg, limits(p),
+                                     p.where(p.getString("path") == "script" ? "script" : "path"));
+    s.people.push_back(std::move(ps));
+  }
+
+  std::mt19937 rng(static_cast<unsigned>(s.seed));
+  std::uniform_real_distribution<double> u01(0, 1);
+  if (single.count("crowd")) {
+    const ParamSet& cr = single.at("crowd");
+    const auto a = numbers(cr, "area", 4);
+    auto in = [&](double lo, double hi) { return lo + (hi - lo) * u01(rng); };
+    for (long i = 0; i < cr.getInt("count"); ++i) {
+      PersonSpec ps;
+      ps.id = static_cast<int>(s.people.size()) + 1;
+      ps.section = "crowd";
+      ps.body.alpha = in(0.17, 0.24);
+      ps.body.beta = in(0.10, 0.15);
+      ps.body.height = in(1.55, 1.92);
+      ps.body.step_length = in(0.55, 0.75);
+      MotionLimits lim;
+      lim.speed = in(cr.getDouble("speed_min"), cr.getDouble("speed_max"));
+      lim.facing_rate = 150 * kDeg;
+      const double x = in(a[0], a[2]), y = in(a[1], a[3]), yaw = in(-M_PI, M_PI);
+      const std::string script =
+          randomWalkScript(static_cast<unsigned>(rng()), int(cr.getInt("legs")), a[0], a[1], a[2],
+                           a[3], cr.getDouble("max_stop"));
+      ps.path = Trajectory::fromScript(script, x, y, yaw, lim, cr.where("area"));
+      s.people.push_back(std::move(ps));
+    }
+  }
+
+  for (const auto& [sec, p] : objects)
+    addObject(s, p.getString("type"), p.getDouble("x"), p.getDouble("y"), &p, p.getDouble("x2"),
+              p.getDouble("y2"), p.getDouble("radius"), p.getDouble("height"),
+              p.getDouble("yaw") * kDeg, p.getDouble("width"), p.getDouble("depth"),
+              p.getDouble("thickness"), p.getDouble("crown"));
+  if (single.count("clutter")) {
+    const ParamSet& cl = single.at("clutter");
+    const auto a = numbers(cl, "area", 4);
+    const auto types = cl.getList("types");
+    for (const auto& t : types)
+      if (t != "pole" && t != "box" && t != "bin" && t != "tree" && t != "wall")
+        throw ConfigError(cl.where("types") + ": unknown object type '" + t + "'");
+    if (types.empty()) throw ConfigError(cl.where("types") + ": empty");
+    for (long i = 0; i < cl.getInt("count"); ++i) {
+      const std::string& t =
+          types[static_cast<std::size_t>(u01(rng) * types.size()) % types.size()];
+      const double x = a[0] + (a[2] - a[0]) * u01(rng), y = a[1] + (a[3] - a[1]) * u01(rng);
+      const double yaw = u01(rng) * M_PI;
+      addObject(s, t, x, y, &cl, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw),
+                t == "pole" ? 0.04 + 0.06 * u01(rng) : 0, 0, yaw, 0.4 + 0.8 * u01(rng),
+                0.3 + 0.5 * u01(rng), 0.15, 1.0 + u01(rng));
+    }
+  }
+  return s;
+}
+
+Scenario loadScenario(const std::string& path, long seed_override) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw ConfigError(path + ": scenario file not found");
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return scenarioFromText(ss.str(), path, seed_override);
+}
+
+}  // namespace pedtrack::sim
