@@ -37,7 +37,7 @@ endif()
 file(WRITE ${WORK_DIR}/other.ini "[pipeline]\nstages = source other\n[source]\nplugin = rawlog\nfile = ${DATASET}\n[other]\nplugin = other_api\n")
 execute_process(COMMAND ${pedtrack} run ${WORK_DIR}/other.ini --plugin-path ${WORK_DIR}/build --out ${WORK_DIR}/out2
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 2 OR NOT err MATCHES "API version 0, but this pedtrack has API version 1" OR EXISTS ${WORK_DIR}/out2)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "API version 0, but this pedtrack has API version 2" OR EXISTS ${WORK_DIR}/out2)
   message(FATAL_ERROR "a plugin of another API version was not refused properly (${rc}):\n${err}")
 endif()
 message(STATUS "external plugin: ${err}")

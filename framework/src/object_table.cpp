@@ -34,7 +34,9 @@ bool ObjectTable::hasColumn(const std::string& name) const {
   return std::find(columns.begin(), columns.end(), name) != columns.end();
 }
 
-ObjectTable readObjectTable(const std::string& path) {
+namespace {
+
+ObjectTable readTable(const std::string& path, bool id_required) {
   std::ifstream in(path);
   if (!in) throw ConfigError(path + ": cannot open (no such file?)");
   ObjectTable table;
@@ -48,7 +50,8 @@ ObjectTable readObjectTable(const std::string& path) {
   const int c_id = col.count("track") ? col["track"] : index("id");
   for (const char* req : {"t", "x", "y"})
     if (index(req) < 0) throw ConfigError(path + ": header lacks required column '" + req + "'");
-  if (c_id < 0) throw ConfigError(path + ": header lacks an id column ('track' or 'id')");
+  if (c_id < 0 && id_required)
+    throw ConfigError(path + ": header lacks an id column ('track' or 'id')");
 
   long line_no = 1;
   while (std::getline(in, line)) {
@@ -83,7 +86,7 @@ ObjectTable readObjectTable(const std::string& path) {
     ObjectRow r;
     real(index("t"), r.t, true);
     integer(index("frame"), r.frame, false);
-    integer(c_id, r.id, true);
+    if (c_id >= 0) integer(c_id, r.id, true);
     real(index("x"), r.x, true);
     real(index("y"), r.y, true);
     real(index("sensor_x"), r.sensor_x, false);
@@ -107,6 +110,24 @@ ObjectTable readObjectTable(const std::string& path) {
     const int c_status = index("status");
     if (c_status >= 0 && c_status < int(f.size())) r.status = f[c_status];
     table.rows.push_back(std::move(r));
+  }
+  return table;
+}
+
+}  // namespace
+
+ObjectTable readObjectTable(const std::string& path) {
+  return readTable(path, true);
+}
+
+ObjectTable readDetectionTable(const std::string& path) {
+  ObjectTable table = readTable(path, false);
+  if (table.hasColumn("track") || table.hasColumn("id")) return table;
+  // detections.csv writes each frame's detections together: number them within their frame.
+  long next = 0;
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    if (i > 0 && std::fabs(table.rows[i].t - table.rows[i - 1].t) > 1e-4) next = 0;
+    table.rows[i].id = next++;
   }
   return table;
 }

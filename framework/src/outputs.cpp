@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
 
 #include "pedtrack/errors.h"
@@ -13,29 +14,50 @@ static double monotonicSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-const char* TracksCsvWriter::header() {
-  return "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,"
-         "model_probs,status";
+// A fixed-frame point seen from the sensor at time t (at the sensor's own height, so a level
+// sensor gives the exact planar coordinates).
+static void toSensorFrame(const Frame& f, double x, double y, double& sx, double& sy) {
+  double sz = 0;
+  f.sensor_pose.inverseComposePoint(x, y, f.sensor_pose.z(), sx, sy, sz);
 }
 
-TracksCsvWriter::TracksCsvWriter(const std::string& path) : out_(path), path_(path) {
+// Rows reach the disk at least once a second, so an interrupted run keeps what it produced.
+CsvStream::CsvStream(const std::string& path, const char* header) : out_(path), path_(path) {
   if (!out_) throw DataError(path + ": cannot open for writing");
-  out_ << header() << '\n';
+  out_ << header << '\n';
   out_.flush();
   last_flush_ = monotonicSeconds();
 }
 
-TracksCsvWriter::~TracksCsvWriter() {
+CsvStream::~CsvStream() {
   close();
+}
+
+void CsvStream::frameWritten() {
+  const double now = monotonicSeconds();
+  if (now - last_flush_ > 1.0) {
+    out_.flush();
+    last_flush_ = now;
+  }
+}
+
+void CsvStream::close() {
+  if (out_.is_open()) {
+    out_.flush();
+    out_.close();
+  }
+}
+
+const char* TracksCsvWriter::header() {
+  return "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,"
+         "model_probs,status,nis";
 }
 
 void TracksCsvWriter::write(const Frame& f) {
   char buf[512];
   for (const Track& tr : f.tracks) {
-    // Position seen from the sensor at time t (the sensor's own height, so a level sensor gives
-    // the exact planar coordinates).
-    double sx = 0, sy = 0, sz = 0;
-    f.sensor_pose.inverseComposePoint(tr.x, tr.y, f.sensor_pose.z(), sx, sy, sz);
+    double sx = 0, sy = 0;
+    toSensorFrame(f, tr.x, tr.y, sx, sy);
     int n = std::snprintf(buf, sizeof buf, "%.6f,%zu,%ld,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,", f.t,
                           f.index, tr.id, tr.x, tr.y, sx, sy, tr.yaw, tr.vx, tr.vy);
     out_.write(buf, n);
@@ -57,20 +79,37 @@ void TracksCsvWriter::write(const Frame& f) {
       n = std::snprintf(buf, sizeof buf, "%s%.4f", i ? ";" : "", tr.model_probs[i]);
       out_.write(buf, n);
     }
-    out_ << ',' << tr.status << '\n';
+    out_ << ',' << tr.status << ',';
+    if (std::isfinite(tr.nis)) {
+      n = std::snprintf(buf, sizeof buf, "%.6g", tr.nis);
+      out_.write(buf, n);
+    }
+    out_ << '\n';
   }
-  const double now = monotonicSeconds();
-  if (now - last_flush_ > 1.0) {
-    out_.flush();
-    last_flush_ = now;
-  }
+  frameWritten();
 }
 
-void TracksCsvWriter::close() {
-  if (out_.is_open()) {
-    out_.flush();
-    out_.close();
+const char* DetectionsCsvWriter::header() {
+  return "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta";
+}
+
+void DetectionsCsvWriter::write(const Frame& f) {
+  char buf[256];
+  for (const Detection& d : f.detections) {
+    double sx = 0, sy = 0;
+    toSensorFrame(f, d.x, d.y, sx, sy);
+    int n = std::snprintf(buf, sizeof buf, "%.6f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,", f.t, f.index, d.x,
+                          d.y, sx, sy, d.score);
+    out_.write(buf, n);
+    // Detection marks an unknown shape with alpha = beta = 0; its yaw then means nothing either.
+    if (d.alpha > 0 || d.beta > 0) {
+      n = std::snprintf(buf, sizeof buf, "%.5f,%.4f,%.4f\n", d.yaw, d.alpha, d.beta);
+      out_.write(buf, n);
+    } else {
+      out_ << ",,\n";
+    }
   }
+  frameWritten();
 }
 
 std::string jsonEscape(const std::string& s) {

@@ -68,9 +68,12 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   for (const auto& sc : config_.stages) sum.stages.emplace_back(sc.section, sc.descriptor->name);
 
   std::unique_ptr<TracksCsvWriter> csv;
+  std::unique_ptr<DetectionsCsvWriter> detections_csv;  // created on the first detection
   if (!opt.out_dir.empty()) {
     std::filesystem::create_directories(opt.out_dir);
     csv = std::make_unique<TracksCsvWriter>(opt.out_dir + "/tracks.csv");
+    // A stale detections.csv of an earlier run would be read as this run's.
+    std::filesystem::remove(opt.out_dir + "/detections.csv");
   }
   Progress progress("run", opt.progress);
   const auto start = Clock::now();
@@ -110,6 +113,9 @@ RunSummary Pipeline::run(const RunOptions& opt) {
       continue;
     }
     if (csv) csv->write(frame);
+    if (csv && !detections_csv && !frame.detections.empty())
+      detections_csv = std::make_unique<DetectionsCsvWriter>(opt.out_dir + "/detections.csv");
+    if (detections_csv) detections_csv->write(frame);
     ++sum.frames_processed;
     progress.update(sum.frames_read, source_->progress());
   }
@@ -120,6 +126,7 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   progress.done(sum.frames_read);
   if (csv) csv->close();
+  if (detections_csv) detections_csv->close();
   if (!opt.out_dir.empty()) writeRunJson(opt.out_dir + "/run.json", sum);
   return sum;
 }

@@ -5,6 +5,7 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,9 @@ struct Track {
   double score = 0;
   std::vector<double> model_probs;
   std::string status;  ///< e.g. "tentative", "confirmed", "coasting"
+  /// Normalized innovation squared of this frame's update (consistency checks); NaN when the
+  /// track was not updated or the tracker does not compute it.
+  double nis = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Frame {

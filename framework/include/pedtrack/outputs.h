@@ -1,5 +1,5 @@
 #pragma once
-// The output contract of DESIGN.md: tracks.csv and run.json.
+// The output contract of DESIGN.md: tracks.csv, detections.csv and run.json.
 #include <fstream>
 #include <string>
 #include <vector>
@@ -9,20 +9,39 @@
 
 namespace pedtrack {
 
-/// Streams tracks.csv: one row per reported track per frame. Rows reach the disk at least once a
-/// second and when the writer is closed, so an interrupted run keeps what it produced.
-class TracksCsvWriter {
+/// A CSV file streamed row by row: the header on open, rows on disk at least once a second and
+/// when closed, so an interrupted run keeps what it produced.
+class CsvStream {
  public:
-  explicit TracksCsvWriter(const std::string& path);
-  ~TracksCsvWriter();
-  void write(const Frame& frame);
+  CsvStream(const std::string& path, const char* header);
+  ~CsvStream();
   void close();
-  static const char* header();
+
+ protected:
+  /// Call after the rows of a frame: flushes when a second has passed.
+  void frameWritten();
+  std::ofstream out_;
 
  private:
-  std::ofstream out_;
   std::string path_;
   double last_flush_ = 0;
+};
+
+/// Streams tracks.csv: one row per reported track per frame.
+class TracksCsvWriter : public CsvStream {
+ public:
+  explicit TracksCsvWriter(const std::string& path) : CsvStream(path, header()) {}
+  void write(const Frame& frame);
+  static const char* header();
+};
+
+/// Streams detections.csv: one row per detection per frame (`header()`). The pipeline creates it
+/// on the first frame with detections, so a pipeline without a classifier leaves no empty file.
+class DetectionsCsvWriter : public CsvStream {
+ public:
+  explicit DetectionsCsvWriter(const std::string& path) : CsvStream(path, header()) {}
+  void write(const Frame& frame);
+  static const char* header();
 };
 
 struct RunSummary {

@@ -1,0 +1,181 @@
+// `pedtrack eval`: tracks against truth (CLEAR MOT, errors, IDF1, HOTA, NEES/NIS; Monte Carlo
+// runs pooled), or detections against truth points (precision/recall), the truth being the
+// simulator's truth.csv or, with ROS bag support, a bag's labelled leg positions.
+#include <algorithm>
+#include <iostream>
+
+#include "commands.h"
+#include "eval_report.h"
+#include "options.h"
+#include "pedtrack/errors.h"
+#include "pedtrack/eval/detection_pr.h"
+#include "pedtrack/eval/evaluate.h"
+#ifdef PEDTRACK_WITH_ROSBAG
+#include "eval_bag.h"
+#endif
+
+namespace pedtrack::cli {
+namespace {
+
+constexpr double kTimeTolerance = 1e-4;  // s: two stamps this close are one frame
+
+struct EvalArgs {
+  std::vector<std::string> truth, tracks;
+  std::string detections, frame = "fixed", topic, labels_topic;
+  double threshold = 0, hota_distance = 0;
+  long min_visible = 1, following = 0;
+  int nis_dof = 2;
+  bool has_following = false, legs = false, json = false;
+};
+
+bool isBag(const std::string& path) {
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".bag") == 0;
+}
+
+void check(bool ok, const std::string& message) {
+  if (!ok) throw ConfigError("pedtrack eval: " + message + " (see `pedtrack eval --help`)");
+}
+
+void validate(const EvalArgs& a, const po::variables_map& vm) {
+  check(!a.truth.empty(), "--truth is required");
+  check(a.tracks.empty() != a.detections.empty(), "give either --tracks or --detections");
+  check(a.frame == "fixed" || a.frame == "sensor",
+        "--frame: '" + a.frame + "' is not one of fixed, sensor");
+  check(a.threshold > 0, "--threshold: must be > 0 m");
+  check(a.min_visible >= 0, "--min-visible: must be >= 0");
+  if (!a.tracks.empty()) {
+    check(a.truth.size() == 1 || a.truth.size() == a.tracks.size(),
+          "give one --truth, or one per --tracks (Monte Carlo runs in pairs); got " +
+              std::to_string(a.truth.size()) + " and " + std::to_string(a.tracks.size()));
+    for (const auto& t : a.truth)
+      check(!isBag(t), "--truth " + t + ": a bag is truth for --detections only");
+    check(!vm.count("hota-distance") || a.hota_distance > 0, "--hota-distance: must be > 0 m");
+    check(a.nis_dof >= 1, "--nis-dof: must be >= 1");
+    check(!a.legs, "--legs applies to --detections only");
+  } else {
+    check(a.truth.size() == 1, "--detections takes one --truth");
+    check(!a.has_following, "--following applies to --tracks only");
+    check(!a.legs || a.frame == "fixed",
+          "--legs: truth.csv has leg positions in the fixed frame only");
+  }
+}
+
+int evalTracking(const EvalArgs& a) {
+  eval::TrackingOptions opt;
+  opt.threshold = a.threshold;
+  if (a.has_following) opt.following = a.following;
+  opt.hota_distance = a.hota_distance > 0 ? a.hota_distance : a.threshold;
+  opt.nis_dof = a.nis_dof;
+  const auto frame = a.frame == "sensor" ? eval::CoordFrame::Sensor : eval::CoordFrame::Fixed;
+  // Every file is read (and rejected) before any output.
+  std::vector<ObjectTable> truths, tracks;
+  for (const auto& p : a.truth) truths.push_back(readObjectTable(p));
+  for (const auto& p : a.tracks) tracks.push_back(readObjectTable(p));
+  std::vector<std::vector<eval::EvalFrame>> runs;
+  for (std::size_t r = 0; r < tracks.size(); ++r) {
+    const ObjectTable& truth = truths[truths.size() == 1 ? 0 : r];
+    runs.push_back(eval::alignFrames(
+        eval::objectsByTime(truth, frame, a.min_visible, kTimeTolerance),
+        eval::objectsByTime(tracks[r], frame, 0, kTimeTolerance), kTimeTolerance));
+  }
+  const eval::TrackingReport rep = eval::evaluateTracking(runs, opt);
+  EvalSetup s;
+  s.threshold = a.threshold;
+  s.frame = a.frame;
+  s.min_visible = a.min_visible;
+  s.following = opt.following;
+  s.hota_distance = opt.hota_distance;
+  std::cout << (a.json ? trackingJson(rep, s) : trackingText(rep, s));
+  return exit_code::kOk;
+}
+
+int evalDetections(const EvalArgs& a) {
+  EvalSetup s;
+  s.threshold = a.threshold;
+  s.frame = a.frame;
+  s.min_visible = a.min_visible;
+  s.legs = a.legs;
+  std::vector<eval::TimedObjects> truth;
+  if (isBag(a.truth[0])) {
+#ifdef PEDTRACK_WITH_ROSBAG
+    truth = readBagLabels(a.truth[0], a.topic, a.labels_topic).scans;
+    s.truth_source = "bag";
+    s.frame = "sensor";  // the labels are in the laser frame
+    s.legs = true;
+#else
+    throw ConfigError("--truth " + a.truth[0] +
+                      ": this pedtrack was built without ROS bag support (PEDTRACK_WITH_ROSBAG)");
+#endif
+  }
+  const ObjectTable dets = readDetectionTable(a.detections);
+  ObjectTable truth_table;
+  if (s.truth_source == "csv") {
+    truth_table = readObjectTable(a.truth[0]);
+    truth = a.legs ? eval::legsByTime(truth_table, a.min_visible, kTimeTolerance)
+                   : eval::objectsByTime(
+                         truth_table,
+                         a.frame == "sensor" ? eval::CoordFrame::Sensor : eval::CoordFrame::Fixed,
+                         a.min_visible, kTimeTolerance);
+  }
+  const auto estimates = eval::objectsByTime(
+      dets, s.frame == "sensor" ? eval::CoordFrame::Sensor : eval::CoordFrame::Fixed, 0,
+      kTimeTolerance);
+  if (s.truth_source == "bag") {
+    // Detections at times of no scan usually mean the run read another topic or bag.
+    std::size_t orphans = 0;
+    for (const auto& e : estimates) {
+      auto it = std::lower_bound(truth.begin(), truth.end(), e.t - kTimeTolerance,
+                                 [](const eval::TimedObjects& t, double v) { return t.t < v; });
+      orphans += it == truth.end() || it->t > e.t + kTimeTolerance;
+    }
+    if (orphans)
+      std::cerr << "warning: " << orphans << " of " << estimates.size()
+                << " detection frames match no scan of the bag (counted as false positives)\n";
+  }
+  const auto frames = eval::alignFrames(truth, estimates, kTimeTolerance);
+  const eval::DetectionCounts c = eval::detectionPR(frames, a.threshold);
+  std::cout << (a.json ? detectionJson(c, s) : detectionText(c, s));
+  return exit_code::kOk;
+}
+
+}  // namespace
+
+int evalCommand(const std::vector<std::string>& args) {
+  EvalArgs a;
+  po::options_description opts("options");
+  opts.add_options()("truth", po::value(&a.truth)->composing(),
+                     "truth.csv (repeat once per --tracks for Monte Carlo runs), or with "
+                     "--detections a labelled ROS bag")("tracks", po::value(&a.tracks)->composing(),
+                                                        "tracks.csv to score (repeatable: runs)")(
+      "detections", po::value(&a.detections), "detections.csv to score instead of tracks")(
+      "threshold", po::value(&a.threshold),
+      "largest match distance, m (default 0.75 for tracks, 0.1 for detections)")(
+      "following", po::value(&a.following),
+      "score only this truth id and ignore false positives (person following)")(
+      "min-visible", po::value(&a.min_visible)->default_value(1),
+      "truths with fewer visible points are unscored: they may absorb a match, never miss")(
+      "hota-distance", po::value(&a.hota_distance),
+      "HOTA similarity distance tau, m: sim = max(0, 1 - d/tau) (default: --threshold)")(
+      "nis-dof", po::value(&a.nis_dof)->default_value(2), "degrees of freedom of the nis column")(
+      "frame", po::value(&a.frame)->default_value("fixed"),
+      "fixed: compare x,y; sensor: compare sensor_x,sensor_y")(
+      "legs", po::bool_switch(&a.legs),
+      "detections: take the truth points from truth.csv's leg columns")(
+      "topic", po::value(&a.topic), "bag truth: the scan topic (default: the only LaserScan one)")(
+      "labels-topic", po::value(&a.labels_topic)->default_value("/leg_cluster_positions"),
+      "bag truth: the geometry_msgs/PoseArray topic of labelled legs")(
+      "json", po::bool_switch(&a.json), "print one JSON object instead of the table");
+  po::positional_options_description pos;
+  po::variables_map vm;
+  if (!parseOptions("eval",
+                    "--truth truth.csv --tracks tracks.csv [options] | --truth truth.csv|BAG.bag "
+                    "--detections detections.csv [options]",
+                    opts, pos, args, vm))
+    return exit_code::kOk;
+  a.has_following = vm.count("following") > 0;
+  if (!vm.count("threshold")) a.threshold = a.tracks.empty() ? 0.1 : 0.75;
+  validate(a, vm);
+  return a.tracks.empty() ? evalDetections(a) : evalTracking(a);
+}
+
+}  // namespace pedtrack::cli

@@ -1,0 +1,110 @@
+#include "eval_bag.h"
+
+#include <geometry_msgs/PoseArray.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/text.h"
+
+namespace pedtrack::cli {
+namespace {
+
+const std::string kLaserScan = "sensor_msgs/LaserScan";
+const std::string kPoseArray = "geometry_msgs/PoseArray";
+
+std::string chooseScanTopic(const rosbag::Bag& bag, const std::string& path,
+                            const std::string& wanted) {
+  std::set<std::string> scans;
+  rosbag::View all(bag);
+  for (const rosbag::ConnectionInfo* c : all.getConnections())
+    if (c->datatype == kLaserScan) scans.insert(c->topic);
+  if (!wanted.empty()) {
+    if (!scans.count(wanted))
+      throw ConfigError("--topic: " + path + " has no " + kLaserScan + " topic '" + wanted + "'");
+    return wanted;
+  }
+  if (scans.size() == 1) return *scans.begin();
+  std::string list;
+  for (const auto& t : scans) list += (list.empty() ? "" : ", ") + t;
+  throw ConfigError(
+      path + ": " +
+      (scans.empty() ? "no " + kLaserScan + " topic" : "several scan topics (" + list + ")") +
+      "; name the scans with --topic");
+}
+
+std::vector<eval::Object> toObjects(const geometry_msgs::PoseArray& a) {
+  std::vector<eval::Object> out;
+  for (std::size_t i = 0; i < a.poses.size(); ++i) {
+    eval::Object o;
+    o.id = long(i);
+    o.x = a.poses[i].position.x;
+    o.y = a.poses[i].position.y;
+    out.push_back(o);
+  }
+  return out;
+}
+
+}  // namespace
+
+BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
+                        const std::string& labels_topic) {
+  rosbag::Bag bag;
+  try {
+    bag.open(path, rosbag::bagmode::Read);
+  } catch (const std::exception& e) {
+    throw ConfigError("--truth: cannot open bag '" + path + "': " + oneLine(e.what()));
+  }
+  BagLabels out;
+  out.scan_topic = chooseScanTopic(bag, path, scan_topic);
+  {
+    rosbag::View labels(bag, rosbag::TopicQuery(labels_topic));
+    bool ok = labels.size() > 0;
+    for (const rosbag::ConnectionInfo* c : labels.getConnections())
+      ok = ok && c->datatype == kPoseArray;
+    if (!ok)
+      throw ConfigError(path + ": no " + kPoseArray + " topic '" + labels_topic +
+                        "' (the labelled leg positions; see --labels-topic)");
+  }
+  // Bag order: unstamped arrays wait for the next scan; stamped ones are matched by stamp.
+  std::map<double, std::vector<eval::Object>> stamped;
+  std::vector<eval::Object> pending;
+  std::vector<std::pair<double, std::vector<eval::Object>>> unstamped_for_scan;
+  try {
+    rosbag::View view(bag,
+                      rosbag::TopicQuery(std::vector<std::string>{out.scan_topic, labels_topic}));
+    for (const rosbag::MessageInstance& m : view) {
+      if (m.getTopic() == labels_topic) {
+        auto a = m.instantiate<geometry_msgs::PoseArray>();
+        if (!a) continue;
+        if (a->header.stamp.isZero())
+          pending = toObjects(*a);
+        else
+          stamped[a->header.stamp.toSec()] = toObjects(*a);
+      } else if (auto s = m.instantiate<sensor_msgs::LaserScan>()) {
+        unstamped_for_scan.emplace_back(s->header.stamp.toSec(), std::move(pending));
+        pending.clear();
+      }
+    }
+  } catch (const std::exception& e) {
+    throw DataError(path + ": " + oneLine(e.what()));
+  }
+  for (auto& [t, objects] : unstamped_for_scan) {
+    eval::TimedObjects to{t, std::move(objects)};
+    // A stamped array within 0.1 ms of the scan is its label, whatever the bag order.
+    auto it = stamped.lower_bound(t - 1e-4);
+    if (it != stamped.end() && it->first <= t + 1e-4) to.objects = it->second;
+    out.scans.push_back(std::move(to));
+  }
+  std::stable_sort(
+      out.scans.begin(), out.scans.end(),
+      [](const eval::TimedObjects& a, const eval::TimedObjects& b) { return a.t < b.t; });
+  return out;
+}
+
+}  // namespace pedtrack::cli

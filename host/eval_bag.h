@@ -1,0 +1,24 @@
+#pragma once
+// Truth from a labelled ROS1 bag (leg_tracker's training bags): the leg positions of
+// `labels_topic` (geometry_msgs/PoseArray, laser frame) for every scan of the scan topic.
+#include <string>
+#include <vector>
+
+#include "pedtrack/eval/frames.h"
+
+namespace pedtrack::cli {
+
+struct BagLabels {
+  std::string scan_topic;                 ///< the topic the scans came from
+  std::vector<eval::TimedObjects> scans;  ///< one per scan, t = its header stamp, by t
+};
+
+/// A label array belongs to the scan with the same header stamp; an array with a zero stamp (as
+/// in leg_tracker's *_extracted.bags, whose arrays are unstamped) belongs to the next scan in bag
+/// order, as leg_tracker's train_leg_detector reads them. A scan without labels has no truth
+/// points (every detection there is a false positive). `scan_topic` empty: the bag's only
+/// sensor_msgs/LaserScan topic. Throws ConfigError (bad bag, missing or ambiguous topic).
+BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
+                        const std::string& labels_topic);
+
+}  // namespace pedtrack::cli

@@ -1,0 +1,263 @@
+#include "eval_report.h"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+namespace pedtrack::cli {
+namespace {
+
+std::string format(const char* fmt, ...) {
+  char buf[512];
+  va_list ap;
+  va_start(ap, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  return buf;
+}
+
+// A number for the table: "-" when undefined (0/0).
+std::string fixed(double v, int decimals = 4) {
+  return std::isfinite(v) ? format("%.*f", decimals, v) : std::string("-");
+}
+
+// The report is a handful of flat objects; a JSON library would be a dependency for a dozen
+// keys (as in writeRunJson). Undefined numbers (0/0) are null.
+class Json {
+ public:
+  explicit Json(bool multiline = false) : sep_(multiline ? ",\n  " : ", "), multiline_(multiline) {}
+  Json& num(const char* key, double v) {
+    return raw(key, std::isfinite(v) ? format("%.10g", v) : std::string("null"));
+  }
+  Json& count(const char* key, std::size_t v) { return raw(key, std::to_string(v)); }
+  Json& text(const char* key, const std::string& v) { return raw(key, "\"" + v + "\""); }
+  Json& raw(const char* key, const std::string& v) {
+    out_ += (first_ ? "" : sep_) + std::string("\"") + key + "\": " + v;
+    first_ = false;
+    return *this;
+  }
+  std::string str() const { return multiline_ ? "{\n  " + out_ + "\n}" : "{" + out_ + "}"; }
+
+ private:
+  std::string sep_;
+  bool multiline_;
+  std::string out_;
+  bool first_ = true;
+};
+
+std::string consistencyJson(const std::optional<eval::ConsistencyReport>& c, const char* p) {
+  if (!c) return "null";
+  auto k = [&](const char* name) { return std::string(p) + "_" + name; };
+  Json j;
+  j.count(k("dof").c_str(), std::size_t(c->dof))
+      .count(k("samples").c_str(), c->samples)
+      .count(k("points").c_str(), c->points.size())
+      .num(k("mean").c_str(), c->mean)
+      .num(k("mean_lower").c_str(), c->mean_bounds.lower)
+      .num(k("mean_upper").c_str(), c->mean_bounds.upper)
+      .num(k("point_lower").c_str(), c->nominal_bounds.lower)
+      .num(k("point_upper").c_str(), c->nominal_bounds.upper)
+      .num(k("fraction_inside").c_str(), c->fraction_inside);
+  std::string per = "[";
+  for (std::size_t i = 0; i < c->per_truth.size(); ++i) {
+    const auto& t = c->per_truth[i];
+    Json e;
+    e.raw("id", std::to_string(t.id))
+        .count("points", t.points)
+        .num("mean", t.mean)
+        .num("fraction_inside", t.fraction_inside);
+    per += (i ? ", " : "") + e.str();
+  }
+  j.raw(k("per_truth").c_str(), per + "]");
+  return j.str();
+}
+
+std::string consistencyText(const eval::ConsistencyReport& c, const char* name) {
+  std::string o = format("%s (%d dof, %zu run%s, %zu samples)\n", name, c.dof, c.runs,
+                         c.runs == 1 ? "" : "s", c.samples);
+  o +=
+      format("  mean                %s   95%% region of the mean [%s, %s]\n", fixed(c.mean).c_str(),
+             fixed(c.mean_bounds.lower).c_str(), fixed(c.mean_bounds.upper).c_str());
+  o += format("  points inside       %s %%   of %zu points (truth x frame, averaged over runs)\n",
+              fixed(100 * c.fraction_inside, 1).c_str(), c.points.size());
+  o += format("  point region        [%s, %s]   (95%% for %zu run%s)\n",
+              fixed(c.nominal_bounds.lower).c_str(), fixed(c.nominal_bounds.upper).c_str(), c.runs,
+              c.runs == 1 ? "" : "s");
+  for (const auto& t : c.per_truth)
+    o += format("  truth %-6ld        mean %s, %s %% of %zu points inside\n", t.id,
+                fixed(t.mean).c_str(), fixed(100 * t.fraction_inside, 1).c_str(), t.points);
+  return o;
+}
+
+std::string setupLine(const EvalSetup& s) {
+  std::string o = format("threshold %.3f m, %s frame", s.threshold, s.frame.c_str());
+  if (s.truth_source == "csv") o += format(", min visible points %ld", s.min_visible);
+  if (s.following) o += format(", following truth %ld", *s.following);
+  return o;
+}
+
+}  // namespace
+
+std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s) {
+  const auto& c = r.clear;
+  const auto& e = r.errors;
+  std::string o = format("pedtrack eval: %zu run%s, %zu frames; %s\n\n", r.runs,
+                         r.runs == 1 ? "" : "s", c.frames, setupLine(s).c_str());
+  o += "CLEAR MOT (leg_tracker benchmark rules)\n";
+  o += format("  MOTA                %s\n", fixed(c.mota()).c_str());
+  o += format("  MOTP                %s m\n", fixed(c.motp()).c_str());
+  o += format("  truths              %zu\n", c.truths);
+  o += format("  matched             %zu   (correct %zu, ID switches %zu)\n", c.matches, c.correct,
+              c.id_switches);
+  o += format("  misses              %zu\n", c.misses);
+  o += format("  false positives     %zu%s\n", c.false_positives,
+              s.following ? "   (not counted when following)" : "");
+  o += format("  ID switches         %zu\n", c.id_switches);
+  o += format("  fragmentations      %zu\n", c.fragmentations);
+  o += format("  unscored matches    %zu\n", c.unscored_matches);
+  o += format("\nErrors over the %zu matches\n", e.pairs);
+  o += format("  position RMSE       %s m   (x %s, y %s)\n", fixed(e.rmse()).c_str(),
+              fixed(e.rmseX()).c_str(), fixed(e.rmseY()).c_str());
+  o += format("  position MAE        %s m\n", fixed(e.mae()).c_str());
+  o += format("  heading MAE         %s rad = %s deg   (%zu pairs with yaw)\n",
+              fixed(e.headingMae()).c_str(), fixed(e.headingMae() * 180 / M_PI, 2).c_str(),
+              e.heading_pairs);
+  o += format("  semi-axis MAE       major %s m, minor %s m   (%zu pairs with shape)\n",
+              fixed(e.majorMae()).c_str(), fixed(e.minorMae()).c_str(), e.shape_pairs);
+  o += format("  speed MAE           %s m/s, velocity RMSE %s m/s   (%zu pairs)\n",
+              fixed(e.speedMae()).c_str(), fixed(e.velocityRmse()).c_str(), e.speed_pairs);
+  if (r.identity) {
+    const auto& i = *r.identity;
+    o += "\nIdentity (Ristani et al. 2016)\n";
+    o += format("  IDF1                %s\n", fixed(i.idf1()).c_str());
+    o += format("  IDP                 %s\n", fixed(i.idp()).c_str());
+    o += format("  IDR                 %s\n", fixed(i.idr()).c_str());
+    o += format("  IDTP / IDFP / IDFN  %.0f / %.0f / %.0f\n", i.idtp, i.idfp, i.idfn);
+  }
+  if (r.hota) {
+    const auto& h = *r.hota;
+    o += format("\nHOTA (TrackEval; similarity max(0, 1 - d / %.3f m), mean over alpha)\n",
+                s.hota_distance);
+    o += format("  HOTA                %s\n", fixed(h.hota()).c_str());
+    o += format("  DetA                %s   (DetRe %s, DetPr %s)\n", fixed(h.detA()).c_str(),
+                fixed(h.detRe()).c_str(), fixed(h.detPr()).c_str());
+    o += format("  AssA                %s   (AssRe %s, AssPr %s)\n", fixed(h.assA()).c_str(),
+                fixed(h.assRe()).c_str(), fixed(h.assPr()).c_str());
+    o += format("  LocA                %s\n", fixed(h.locA()).c_str());
+  }
+  if (r.nees) o += "\n" + consistencyText(*r.nees, "NEES");
+  if (r.nis) o += "\n" + consistencyText(*r.nis, "NIS");
+  return o;
+}
+
+std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s) {
+  const auto& c = r.clear;
+  const auto& e = r.errors;
+  Json clear;
+  clear.count("frames", c.frames)
+      .count("truths", c.truths)
+      .count("matches", c.matches)
+      .count("correct", c.correct)
+      .count("misses", c.misses)
+      .count("false_positives", c.false_positives)
+      .count("id_switches", c.id_switches)
+      .count("fragmentations", c.fragmentations)
+      .count("unscored_matches", c.unscored_matches)
+      .num("mota", c.mota())
+      .num("motp_m", c.motp());
+  Json err;
+  err.count("pairs", e.pairs)
+      .num("position_rmse_m", e.rmse())
+      .num("position_mae_m", e.mae())
+      .num("position_rmse_x_m", e.rmseX())
+      .num("position_rmse_y_m", e.rmseY())
+      .count("heading_pairs", e.heading_pairs)
+      .num("heading_mae_rad", e.headingMae())
+      .num("heading_mae_deg", e.headingMae() * 180 / M_PI)
+      .count("shape_pairs", e.shape_pairs)
+      .num("major_axis_mae_m", e.majorMae())
+      .num("minor_axis_mae_m", e.minorMae())
+      .count("speed_pairs", e.speed_pairs)
+      .num("speed_mae_mps", e.speedMae())
+      .num("velocity_rmse_mps", e.velocityRmse());
+  std::string identity = "null", hota = "null";
+  if (r.identity) {
+    const auto& i = *r.identity;
+    Json j;
+    j.num("idtp", i.idtp)
+        .num("idfp", i.idfp)
+        .num("idfn", i.idfn)
+        .num("idf1", i.idf1())
+        .num("idp", i.idp())
+        .num("idr", i.idr());
+    identity = j.str();
+  }
+  if (r.hota) {
+    const auto& h = *r.hota;
+    Json j;
+    j.num("hota_distance_m", s.hota_distance)
+        .num("hota", h.hota())
+        .num("deta", h.detA())
+        .num("assa", h.assA())
+        .num("loca", h.locA())
+        .num("detre", h.detRe())
+        .num("detpr", h.detPr())
+        .num("assre", h.assRe())
+        .num("asspr", h.assPr());
+    hota = j.str();
+  }
+  Json top(true);
+  top.text("mode", "tracking")
+      .count("runs", r.runs)
+      .num("threshold_m", s.threshold)
+      .text("frame", s.frame)
+      .count("min_visible", std::size_t(s.min_visible))
+      .raw("following", s.following ? std::to_string(*s.following) : "null")
+      .raw("clear_mot", clear.str())
+      .raw("errors", err.str())
+      .raw("identity", identity)
+      .raw("hota", hota)
+      .raw("nees", consistencyJson(r.nees, "nees"))
+      .raw("nis", consistencyJson(r.nis, "nis"));
+  return top.str() + "\n";
+}
+
+std::string detectionText(const eval::DetectionCounts& c, const EvalSetup& s) {
+  std::string o = format("pedtrack eval: detections vs %s%s, %zu frames; %s\n\n",
+                         s.truth_source == "bag" ? "labelled legs of a bag" : "truth",
+                         s.legs ? " legs" : "", c.frames, setupLine(s).c_str());
+  o += format("  precision           %s\n", fixed(c.precision()).c_str());
+  o += format("  recall              %s\n", fixed(c.recall()).c_str());
+  o += format("  F1                  %s\n", fixed(c.f1()).c_str());
+  o +=
+      format("  mean distance       %s m   (of true positives)\n", fixed(c.meanDistance()).c_str());
+  o += format("  TP / FP / FN        %zu / %zu / %zu\n", c.tp, c.fp, c.fn);
+  o += format("  truth points        %zu   (scored)\n", c.truth_points);
+  o += format("  detections          %zu\n", c.detections);
+  o += format("  unscored matches    %zu\n", c.unscored_matches);
+  return o;
+}
+
+std::string detectionJson(const eval::DetectionCounts& c, const EvalSetup& s) {
+  Json j(true);
+  j.text("mode", "detections")
+      .text("truth_source", s.truth_source)
+      .raw("legs", s.legs ? "true" : "false")
+      .num("threshold_m", s.threshold)
+      .text("frame", s.frame)
+      .count("min_visible", std::size_t(s.min_visible))
+      .count("frames", c.frames)
+      .count("truth_points", c.truth_points)
+      .count("detections", c.detections)
+      .count("tp", c.tp)
+      .count("fp", c.fp)
+      .count("fn", c.fn)
+      .count("unscored_matches", c.unscored_matches)
+      .num("precision", c.precision())
+      .num("recall", c.recall())
+      .num("f1", c.f1())
+      .num("mean_distance_m", c.meanDistance());
+  return j.str() + "\n";
+}
+
+}  // namespace pedtrack::cli

@@ -1,0 +1,27 @@
+#pragma once
+// `pedtrack eval` output: a readable table, or one JSON object with every number.
+#include <optional>
+#include <string>
+
+#include "pedtrack/eval/detection_pr.h"
+#include "pedtrack/eval/evaluate.h"
+
+namespace pedtrack::cli {
+
+/// What the numbers were computed from, echoed in both formats.
+struct EvalSetup {
+  double threshold = 0;
+  std::string frame = "fixed";  ///< fixed | sensor
+  long min_visible = 1;
+  std::optional<long> following;
+  double hota_distance = 0;
+  std::string truth_source = "csv";  ///< csv | bag
+  bool legs = false;
+};
+
+std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s);
+std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s);
+std::string detectionText(const eval::DetectionCounts& c, const EvalSetup& s);
+std::string detectionJson(const eval::DetectionCounts& c, const EvalSetup& s);
+
+}  // namespace pedtrack::cli

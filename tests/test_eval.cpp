@@ -1,0 +1,389 @@
+// Evaluation metrics on hand-built scenes with hand-derived answers, and the assignment solver
+// against brute force.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <functional>
+#include <random>
+
+#include "pedtrack/assignment.h"
+#include "pedtrack/errors.h"
+#include "pedtrack/eval/detection_pr.h"
+#include "pedtrack/eval/evaluate.h"
+#include "test_support.h"
+
+using namespace pedtrack;
+using namespace pedtrack::eval;
+
+namespace {
+
+Object obj(long id, double x, double y, bool scored = true) {
+  Object o;
+  o.id = id;
+  o.x = x;
+  o.y = y;
+  o.scored = scored;
+  return o;
+}
+
+EvalFrame frame(double t, std::vector<Object> truths, std::vector<Object> estimates) {
+  EvalFrame f;
+  f.t = t;
+  f.truths = std::move(truths);
+  f.estimates = std::move(estimates);
+  return f;
+}
+
+// Two people 10 m apart walking along x for n frames (0.1 m per frame).
+Object person(int who, int k) {
+  return obj(who, 0.1 * k, who == 1 ? 0.0 : 10.0);
+}
+
+// Every (partial) one-to-one assignment of allowed pairs: the most pairs, then the least cost.
+std::pair<std::size_t, double> bruteForce(const std::vector<double>& c, int rows, int cols,
+                                          double gate) {
+  std::pair<std::size_t, double> best{0, 0};
+  std::vector<char> used(cols, 0);
+  std::function<void(int, std::size_t, double)> go = [&](int r, std::size_t n, double cost) {
+    if (r == rows) {
+      if (n > best.first || (n == best.first && cost < best.second - 1e-12)) best = {n, cost};
+      return;
+    }
+    go(r + 1, n, cost);  // row r unassigned
+    for (int j = 0; j < cols; ++j) {
+      const double v = c[r * cols + j];
+      if (used[j] || !std::isfinite(v) || v > gate) continue;
+      used[j] = 1;
+      go(r + 1, n + 1, cost + v);
+      used[j] = 0;
+    }
+  };
+  go(0, 0, 0);
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("assignment equals brute force on random small matrices", "[eval][assignment]") {
+  std::mt19937 rng(42);
+  std::uniform_int_distribution<int> dim(1, 5);
+  std::uniform_real_distribution<double> val(-2, 3);
+  for (int trial = 0; trial < 400; ++trial) {
+    const int rows = dim(rng), cols = dim(rng);
+    std::vector<double> c(rows * cols);
+    for (double& v : c) v = val(rng);
+    if (trial % 7 == 0) c[0] = std::nan("");
+    const double gate = trial % 2 ? 1.0 : std::numeric_limits<double>::infinity();
+    const Assignment a = solveAssignment(c, rows, cols, gate);
+    const auto [n, cost] = bruteForce(c, rows, cols, gate);
+    INFO("trial " << trial << " " << rows << "x" << cols);
+    REQUIRE(a.size() == n);
+    CHECK(a.cost == Approx(cost).margin(1e-9));
+    for (const auto& [r, col] : a.pairs()) {
+      CHECK(a.col_to_row[col] == r);
+      CHECK(c[r * cols + col] <= gate);
+    }
+  }
+}
+
+TEST_CASE("assignment overloads, maximisation and empty inputs", "[eval][assignment]") {
+  Eigen::MatrixXd m(2, 3);
+  m << 4, 1, 3, 2, 0, 5;
+  const Assignment e = solveAssignment(m);
+  CHECK(e.cost == Approx(3));  // (0,1) + (1,0): 1 + 2
+  CHECK(e.row_to_col == std::vector<int>{1, 0});
+  CHECK(e.col_to_row == std::vector<int>{1, 0, -1});
+  const Assignment v = solveAssignment(std::vector<std::vector<double>>{{4, 1, 3}, {2, 0, 5}}, 1.5);
+  // Gate 1.5 allows (0,1)=1 and (1,1)=0 only, which share a column: one pair, the cheaper.
+  CHECK(v.size() == 1);
+  CHECK(v.row_to_col[1] == 1);
+  const Assignment mx = maximizeAssignment({4, 1, 3, 2, 0, 5}, 2, 3);
+  CHECK(mx.cost == Approx(9));  // (0,0) + (1,2)
+  CHECK(solveAssignment(std::vector<double>{}, 0, 3).size() == 0);
+  CHECK(solveAssignment(std::vector<double>{}, 3, 0).row_to_col == std::vector<int>(3, -1));
+}
+
+TEST_CASE("truth given as tracks scores perfectly", "[eval]") {
+  std::vector<EvalFrame> frames;
+  for (int k = 0; k < 20; ++k)
+    frames.push_back(
+        frame(k * 0.1, {person(1, k), person(2, k)}, {obj(11, 0.1 * k, 0), obj(12, 0.1 * k, 10)}));
+  const TrackingReport r = evaluateTracking({frames}, {});
+  CHECK(r.clear.truths == 40);
+  CHECK(r.clear.matches == 40);
+  CHECK(r.clear.mota() == 1.0);
+  CHECK(r.clear.motp() == 0.0);
+  CHECK(r.clear.id_switches + r.clear.fragmentations + r.clear.false_positives == 0);
+  REQUIRE(r.identity);
+  CHECK(r.identity->idf1() == 1.0);
+  REQUIRE(r.hota);
+  CHECK(r.hota->hota() == Approx(1.0));
+  CHECK(r.hota->detA() == Approx(1.0));
+  CHECK(r.hota->assA() == Approx(1.0));
+  CHECK(r.hota->locA() == Approx(1.0));
+  CHECK(r.errors.rmse() == 0.0);
+  CHECK_FALSE(r.nees);
+}
+
+TEST_CASE("an id swap between two distant people: one switch per track, IDF1 and HOTA by hand",
+          "[eval]") {
+  // Tracks 11/12 follow persons 1/2 for frames 0..5, then swap for frames 6..19.
+  std::vector<EvalFrame> frames;
+  for (int k = 0; k < 20; ++k) {
+    const bool swapped = k >= 6;
+    frames.push_back(
+        frame(k * 0.1, {person(1, k), person(2, k)},
+              {obj(swapped ? 12 : 11, 0.1 * k, 0), obj(swapped ? 11 : 12, 0.1 * k, 10)}));
+  }
+  const TrackingReport r = evaluateTracking({frames}, {});
+  CHECK(r.clear.id_switches == 2);
+  CHECK(r.clear.correct == 38);
+  CHECK(r.clear.mota() == Approx(1 - 2.0 / 40));
+  // Best global pairing: 11↔2 and 12↔1, 14 frames each. IDTP 28, IDFP = IDFN = 40 − 28.
+  REQUIRE(r.identity);
+  CHECK(r.identity->idtp == 28);
+  CHECK(r.identity->idfp == 12);
+  CHECK(r.identity->idfn == 12);
+  CHECK(r.identity->idf1() == Approx(0.7));
+  // HOTA: every detection is a TP at every α (sim 1), so DetA = 1. Pairs (1,11), (2,12) have
+  // 6 TPA each, (1,12), (2,11) 14; every id has 20 objects. AssA = Σ TPA² / (40 − TPA) / 40.
+  const double ass = (2 * 36.0 / 34 + 2 * 196.0 / 26) / 40;
+  REQUIRE(r.hota);
+  CHECK(r.hota->detA() == Approx(1.0));
+  CHECK(r.hota->assA() == Approx(ass));
+  CHECK(r.hota->hota() == Approx(std::sqrt(ass)));
+}
+
+TEST_CASE("a track 0.8 m off is one miss and one false positive per frame", "[eval]") {
+  std::vector<EvalFrame> frames;
+  for (int k = 0; k < 10; ++k) frames.push_back(frame(k, {obj(1, 0, 0)}, {obj(5, 0.8, 0)}));
+  const TrackingReport r = evaluateTracking({frames}, {});
+  CHECK(r.clear.misses == 10);
+  CHECK(r.clear.false_positives == 10);
+  CHECK(r.clear.matches == 0);
+  CHECK(r.clear.mota() == Approx(-1.0));
+  CHECK(std::isnan(r.clear.motp()));
+  CHECK(r.identity->idf1() == 0.0);
+  // At τ = 1.1 m the similarity is 3/11: a TP for α ≤ 0.25 (the first 5 of 19 α).
+  TrackingOptions wide;
+  wide.hota_distance = 1.1;
+  const TrackingReport h = evaluateTracking({frames}, wide);
+  CHECK(h.hota->detA() == Approx(5.0 / 19));
+  CHECK(h.hota->assA() == Approx(5.0 / 19));
+  CHECK(h.hota->locA() == Approx((5 * 3.0 / 11 + 14) / 19));  // hota.py: LocA 1 without TPs
+}
+
+TEST_CASE("fragmentations count interruptions between matches of a truth", "[eval]") {
+  // Matched in frames 0-2, 5-6, 8-9; missed in 3-4 and 7: two fragmentations, no switch.
+  std::vector<EvalFrame> frames;
+  for (int k = 0; k < 10; ++k) {
+    const bool tracked = !(k == 3 || k == 4 || k == 7);
+    frames.push_back(
+        frame(k, {person(1, k)},
+              tracked ? std::vector<Object>{obj(5, 0.1 * k, 0)} : std::vector<Object>{}));
+  }
+  ClearMotCounts c = clearMot(frames, {}).counts;
+  CHECK(c.fragmentations == 2);
+  CHECK(c.misses == 3);
+  CHECK(c.id_switches == 0);
+  // Misses before the first match and after the last one are not fragmentations.
+  frames.clear();
+  for (int k = 0; k < 10; ++k)
+    frames.push_back(
+        frame(k, {person(1, k)},
+              k >= 3 && k <= 6 ? std::vector<Object>{obj(5, 0.1 * k, 0)} : std::vector<Object>{}));
+  c = clearMot(frames, {}).counts;
+  CHECK(c.fragmentations == 0);
+  CHECK(c.misses == 6);
+}
+
+TEST_CASE("a kept correspondence wins over a closer track while within the threshold", "[eval]") {
+  const std::vector<EvalFrame> frames = {
+      frame(0, {obj(1, 0, 0)}, {obj(7, 0, 0)}),
+      frame(1, {obj(1, 0, 0)}, {obj(7, 0.5, 0), obj(8, 0.05, 0)}),  // 7 kept, 8 is an FP
+      frame(2, {obj(1, 0, 0)}, {obj(7, 0.8, 0), obj(8, 0.05, 0)}),  // 7 too far: 8, a switch
+      frame(3, {obj(1, 0, 0)}, {obj(7, 0.1, 0), obj(8, 0.5, 0)}),   // 8 kept now
+  };
+  const ClearMotResult r = clearMot(frames, {});
+  CHECK(r.counts.matches == 4);
+  CHECK(r.counts.false_positives == 3);
+  CHECK(r.counts.id_switches == 1);
+  CHECK(r.counts.motp() == Approx((0 + 0.5 + 0.05 + 0.5) / 4));
+  REQUIRE(r.pairs.size() == 4);
+  CHECK(r.pairs[1].estimate.id == 7);
+  CHECK(r.pairs[2].estimate.id == 8);
+  CHECK(r.pairs[3].estimate.id == 8);
+}
+
+TEST_CASE("unscored truths absorb tracks but are never missed", "[eval]") {
+  // Person 1 is hidden (unscored) in frames 2-4; track 5 coasts on it in 2-3, then nothing in 4.
+  // Track 6 takes over in frame 5: judged against the memory (5), an ID switch.
+  std::vector<EvalFrame> frames;
+  for (int k = 0; k < 7; ++k) {
+    const bool hidden = k >= 2 && k <= 4;
+    std::vector<Object> est;
+    if (k <= 3) est.push_back(obj(5, 0.1 * k, 0));
+    if (k >= 5) est.push_back(obj(6, 0.1 * k, 0));
+    frames.push_back(frame(k, {obj(1, 0.1 * k, 0, !hidden)}, est));
+  }
+  const ClearMotResult r = clearMot(frames, {});
+  CHECK(r.counts.truths == 4);
+  CHECK(r.counts.misses == 0);
+  CHECK(r.counts.false_positives == 0);
+  CHECK(r.counts.unscored_matches == 2);
+  CHECK(r.counts.matches == 4);
+  CHECK(r.counts.id_switches == 1);
+  CHECK(r.counts.fragmentations == 0);  // hidden frames are not gaps
+  // IDF1 and HOTA drop the hidden truth and the tracks it absorbed.
+  const auto scored = withoutUnscored(frames, r);
+  CHECK(scored[2].truths.empty());
+  CHECK(scored[2].estimates.empty());
+  const IdentityCounts id = identity(scored, 0.75);
+  CHECK(id.idtp == 2);  // 5↔1 and 6↔1 cover 2 frames each; only one pairing counts
+  CHECK(id.idfn == 2);
+  CHECK(id.idfp == 2);
+}
+
+TEST_CASE("visible_points below --min-visible make a truth row unscored", "[eval]") {
+  const std::string dir = test::freshDir("eval_visible");
+  test::writeFile(dir + "/truth.csv",
+                  "t,id,x,y,visible_points\n1.0,1,0,0,0\n1.0,2,1,0,3\n1.0,3,2,0,\n");
+  const ObjectTable t = readObjectTable(dir + "/truth.csv");
+  auto scored = [&](long min_visible) {
+    std::vector<bool> s;
+    const auto slices = objectsByTime(t, CoordFrame::Fixed, min_visible);
+    for (const Object& o : slices.at(0).objects) s.push_back(o.scored);
+    return s;
+  };
+  CHECK(scored(1) == std::vector<bool>{false, true, true});  // empty column: scored
+  CHECK(scored(5) == std::vector<bool>{false, false, true});
+  CHECK(scored(0) == std::vector<bool>{true, true, true});
+}
+
+TEST_CASE("following mode scores one person and ignores false positives", "[eval]") {
+  std::vector<EvalFrame> frames;
+  for (int k = 0; k < 10; ++k) {
+    std::vector<Object> est = {obj(2, 0.1 * k, 10), obj(9, 5, 5)};  // 2 on person 2, 9 clutter
+    if (k < 8) est.push_back(obj(1, 0.1 * k + 0.1, 0));             // person 1 lost at the end
+    frames.push_back(frame(k, {person(1, k), person(2, k)}, est));
+  }
+  TrackingOptions opt;
+  opt.following = 1;
+  const TrackingReport r = evaluateTracking({frames}, opt);
+  CHECK(r.clear.truths == 10);
+  CHECK(r.clear.matches == 8);
+  CHECK(r.clear.misses == 2);
+  CHECK(r.clear.false_positives == 0);
+  CHECK(r.clear.unscored_matches == 10);  // track 2 on person 2
+  CHECK(r.clear.mota() == Approx(0.8));
+  CHECK(r.clear.motp() == Approx(0.1));
+  CHECK_FALSE(r.identity);
+  CHECK_FALSE(r.hota);
+}
+
+TEST_CASE("NEES of a known covariance and offset, and the chi-square regions", "[eval]") {
+  CHECK(normalizedSquare(0.2, 0.1, 0.04, 0, 0.01) == Approx(2.0));
+  // P = [0.05 0.02; 0.02 0.02], d = (0.1, 0.1): dᵀP⁻¹d = 0.0003 / 0.0006.
+  CHECK(normalizedSquare(0.1, 0.1, 0.05, 0.02, 0.02) == Approx(0.5));
+  CHECK(std::isnan(normalizedSquare(0.1, 0.1, 0.01, 0.02, 0.01)));  // not positive definite
+
+  // Two-sided 95 % regions of the average of N χ²(2) values (tables: χ²₂, χ²₄, χ²₁₀₀).
+  const ChiSquareBounds one = chiSquareBounds(2, 1);
+  CHECK(one.lower == Approx(0.0506).epsilon(1e-3));
+  CHECK(one.upper == Approx(7.378).epsilon(1e-3));
+  const ChiSquareBounds two = chiSquareBounds(2, 2);
+  CHECK(two.lower == Approx(0.4844 / 2).epsilon(1e-3));
+  CHECK(two.upper == Approx(11.143 / 2).epsilon(1e-3));
+  const ChiSquareBounds fifty = chiSquareBounds(2, 50);
+  CHECK(fifty.lower == Approx(74.222 / 50).epsilon(1e-3));
+  CHECK(fifty.upper == Approx(129.561 / 50).epsilon(1e-3));
+
+  // End to end: a track 0.2 m east, 0.1 m north of the truth with P = diag(0.04, 0.01).
+  std::vector<ObjectRow> rows(2);
+  rows[1].x = 0.2;
+  rows[1].y = 0.1;
+  rows[1].cov_xx = 0.04;
+  rows[1].cov_xy = 0;
+  rows[1].cov_yy = 0.01;
+  rows[1].nis = 3.5;
+  Object t = obj(1, 0, 0), e = obj(4, 0.2, 0.1);
+  t.row = &rows[0];
+  e.row = &rows[1];
+  const ClearMotResult cm = clearMot({frame(0, {t}, {e}), frame(1, {t}, {e})}, {});
+  const auto nees = neesSamples(cm.pairs);
+  REQUIRE(nees.size() == 2);
+  CHECK(nees[0].value == Approx(2.0));
+  const ConsistencyReport rep = consistency(nees, 2, 1);
+  CHECK(rep.mean == Approx(2.0));
+  CHECK(rep.fraction_inside == 1.0);
+  CHECK(rep.mean_bounds.lower == Approx(chiSquareBounds(2, 2).lower));
+  CHECK(nisSamples(cm.pairs)[1].value == 3.5);
+}
+
+TEST_CASE("Monte Carlo consistency averages each truth and frame over the runs", "[eval]") {
+  // Truth 1, frame 0: runs give 1 and 9 (mean 5, inside [0.242, 5.572]); frame 1: 9 and 9
+  // (mean 9, outside). Truth 2, frame 0: only one run matched it: 0.01 against the N=1 region.
+  const std::vector<ConsistencySample> s = {
+      {1, 0, 1.0}, {1, 0, 9.0}, {1, 1, 9.0}, {1, 1, 9.0}, {2, 0, 0.01}};
+  const ConsistencyReport r = consistency(s, 2, 2);
+  REQUIRE(r.points.size() == 3);
+  CHECK(r.points[0].mean == 5.0);
+  CHECK(r.points[0].n == 2);
+  CHECK(r.points[0].inside);
+  CHECK_FALSE(r.points[1].inside);
+  CHECK(r.points[2].n == 1);
+  CHECK_FALSE(r.points[2].inside);  // 0.01 < 0.0506
+  CHECK(r.fraction_inside == Approx(1.0 / 3));
+  CHECK(r.mean == Approx(28.01 / 5));
+  CHECK(r.nominal_bounds.upper == Approx(11.143 / 2).epsilon(1e-3));
+  REQUIRE(r.per_truth.size() == 2);
+  CHECK(r.per_truth[0].mean == Approx(7.0));
+  CHECK(r.per_truth[0].fraction_inside == Approx(0.5));
+}
+
+TEST_CASE("detection precision and recall with per-scan matching", "[eval]") {
+  // Frame 0: truths (0,0), (1,0); detections 0.05 off the first, 0.3 off the second, clutter.
+  // Frame 1: truth only (a miss). Frame 2: a detection only (an FP). Frame 3: an unscored
+  // truth absorbs its detection.
+  const std::vector<EvalFrame> frames = {
+      frame(0, {obj(0, 0, 0), obj(1, 1, 0)}, {obj(0, 0.05, 0), obj(1, 1.3, 0), obj(2, 4, 4)}),
+      frame(1, {obj(0, 0, 0)}, {}),
+      frame(2, {}, {obj(0, 2, 2)}),
+      frame(3, {obj(0, 0, 0, false)}, {obj(0, 0.02, 0)}),
+  };
+  const DetectionCounts c = detectionPR(frames, 0.1);
+  CHECK(c.tp == 1);
+  CHECK(c.fp == 3);
+  CHECK(c.fn == 2);
+  CHECK(c.unscored_matches == 1);
+  CHECK(c.precision() == Approx(0.25));
+  CHECK(c.recall() == Approx(1.0 / 3));
+  CHECK(c.f1() == Approx(2.0 / 7));
+  CHECK(c.meanDistance() == Approx(0.05));
+}
+
+TEST_CASE("frames are the union of truth and estimate times", "[eval]") {
+  const std::vector<TimedObjects> truth = {{1.0, {obj(1, 0, 0)}}, {1.1, {obj(1, 0, 0)}}};
+  const std::vector<TimedObjects> est = {{1.00005, {obj(3, 0, 0)}}, {1.2, {obj(3, 0, 0)}}};
+  const auto f = alignFrames(truth, est);
+  REQUIRE(f.size() == 3);
+  CHECK(f[0].truths.size() == 1);
+  CHECK(f[0].estimates.size() == 1);
+  CHECK(f[1].estimates.empty());
+  CHECK(f[2].truths.empty());
+  CHECK(f[2].t == 1.2);
+}
+
+TEST_CASE("detections.csv reads with ids numbered within each frame", "[eval]") {
+  const std::string dir = test::freshDir("eval_detections_table");
+  test::writeFile(dir + "/d.csv",
+                  "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta\n"
+                  "1.0,0,1,2,1,2,0.9,,,\n1.0,0,3,4,3,4,0.8,0.1,0.2,0.1\n2.0,1,5,6,5,6,0.7,,,\n");
+  const ObjectTable t = readDetectionTable(dir + "/d.csv");
+  REQUIRE(t.rows.size() == 3);
+  CHECK(t.rows[0].id == 0);
+  CHECK(t.rows[1].id == 1);
+  CHECK(t.rows[2].id == 0);
+  CHECK(t.rows[1].alpha == 0.2);
+  CHECK(std::isnan(t.rows[0].yaw));
+  CHECK_THROWS_AS(readObjectTable(dir + "/d.csv"), ConfigError);  // tracks need an id
+}

@@ -1,0 +1,316 @@
+// `pedtrack eval` as a user runs it: tables, JSON, Monte Carlo runs, errors, and detections
+// against the labelled legs of a leg_tracker training bag.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+
+#include "test_support.h"
+#ifdef PEDTRACK_WITH_ROSBAG
+#include <geometry_msgs/PoseArray.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <sensor_msgs/LaserScan.h>
+#endif
+
+using namespace pedtrack::test;
+
+namespace {
+
+const char* kTruthHeader =
+    "t,frame,id,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,height,visible_points,left_leg_x,"
+    "left_leg_y,right_leg_x,right_leg_y\n";
+const char* kTracksHeader =
+    "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,"
+    "model_probs,status,nis\n";
+
+template <class... A>
+std::string fmt(const char* f, A... a) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, f, a...);
+  return buf;
+}
+
+// Person 1 walks along y = 0, person 2 along y = 5, 10 frames at 10 Hz, legs ±0.1 m in y.
+// Person 1 is hidden (visible_points 0) in the last frame. sensor_x = x + 1.
+std::string truthCsv() {
+  std::string s = kTruthHeader;
+  for (int k = 0; k < 10; ++k)
+    for (int id = 1; id <= 2; ++id) {
+      const double t = 100 + 0.1 * k, x = 0.1 * k, y = id == 1 ? 0 : 5;
+      const int visible = id == 1 && k == 9 ? 0 : 50;
+      s += fmt("%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,0,1,0,0.25,0.15,1.7,%d,%.4f,%.4f,%.4f,%.4f\n", t, k,
+               id, x, y, x + 1, y, visible, x, y + 0.1, x, y - 0.1);
+    }
+  return s;
+}
+
+// Tracks 7 and 8 on persons 1 and 2, `dx` east of them in x (sensor_x stays exact), with
+// covariance diag(0.01, 0.01) and nis 2.
+std::string tracksCsv(double dx) {
+  std::string s = kTracksHeader;
+  for (int k = 0; k < 10; ++k)
+    for (int id = 1; id <= 2; ++id) {
+      const double t = 100 + 0.1 * k, x = 0.1 * k, y = id == 1 ? 0 : 5;
+      s += fmt("%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,0,1,0,,,0.01,0,0.01,0.9,,confirmed,2\n", t, k,
+               id + 6, x + dx, y, x + 1, y);
+    }
+  return s;
+}
+
+// A number of the JSON output: the first `"key": <number>`.
+double jsonValue(const std::string& json, const std::string& key) {
+  const std::string k = "\"" + key + "\": ";
+  for (auto p = json.find(k); p != std::string::npos; p = json.find(k, p + 1)) {
+    const char c = json[p + k.size()];
+    if (c == '-' || (c >= '0' && c <= '9')) return std::stod(json.substr(p + k.size()));
+  }
+  throw std::runtime_error("no number for " + key + " in " + json);
+}
+
+}  // namespace
+
+TEST_CASE("eval prints CLEAR MOT, identity, HOTA and NEES as a table and as JSON", "[eval_cli]") {
+  const std::string dir = freshDir("eval_cli_table");
+  writeFile(dir + "/truth.csv", truthCsv());
+  writeFile(dir + "/tracks.csv", tracksCsv(0.1));
+  const auto text =
+      runHost({"eval", "--truth", dir + "/truth.csv", "--tracks", dir + "/tracks.csv"});
+  INFO(text.output);
+  REQUIRE(text.exit_code == 0);
+  CHECK_THAT(text.output, Catch::Contains("MOTA                1.0000"));
+  CHECK_THAT(text.output, Catch::Contains("MOTP                0.1000 m"));
+  CHECK_THAT(text.output, Catch::Contains("IDF1                1.0000"));
+  CHECK_THAT(text.output, Catch::Contains("NEES (2 dof, 1 run, 19 samples)"));
+
+  const auto js =
+      runHost({"eval", "--truth", dir + "/truth.csv", "--tracks", dir + "/tracks.csv", "--json"});
+  REQUIRE(js.exit_code == 0);
+  const std::string& j = js.output;
+  // 19 scored truths: person 1 is hidden in the last frame and absorbs track 7 there.
+  CHECK(jsonValue(j, "truths") == 19);
+  CHECK(jsonValue(j, "unscored_matches") == 1);
+  CHECK(jsonValue(j, "mota") == 1);
+  CHECK(jsonValue(j, "motp_m") == Approx(0.1));
+  CHECK(jsonValue(j, "position_rmse_m") == Approx(0.1));
+  CHECK(jsonValue(j, "speed_mae_mps") == 0);
+  CHECK(jsonValue(j, "idf1") == 1);
+  // sim = 1 − 0.1/0.75 ≈ 0.867: every pair is a TP for α ≤ 0.85, 17 of the 19 α.
+  CHECK(jsonValue(j, "hota") == Approx(17.0 / 19));
+  CHECK(jsonValue(j, "loca") == Approx((17 * (1 - 0.1 / 0.75) + 2) / 19));
+  CHECK(jsonValue(j, "nees_mean") == Approx(1.0));  // 0.1² / 0.01
+  CHECK(jsonValue(j, "nees_point_upper") == Approx(7.378).epsilon(1e-3));
+  CHECK(jsonValue(j, "nis_mean") == Approx(2.0));
+  CHECK(j.find("\"following\": null") != std::string::npos);
+}
+
+TEST_CASE("eval options: sensor frame, threshold, following, Monte Carlo runs", "[eval_cli]") {
+  const std::string dir = freshDir("eval_cli_options");
+  writeFile(dir + "/truth.csv", truthCsv());
+  writeFile(dir + "/off.csv", tracksCsv(0.8));
+  const std::string truth = dir + "/truth.csv", off = dir + "/off.csv";
+  auto json = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"eval", "--truth", truth, "--tracks", off, "--json"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = runHost(args);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    return r.output;
+  };
+  const std::string fixed = json({});
+  CHECK(jsonValue(fixed, "misses") == 19);
+  CHECK(jsonValue(fixed, "false_positives") == 20);  // 0.8 m is too far even to be absorbed
+  CHECK(jsonValue(fixed, "mota") == Approx(1 - 39.0 / 19));
+  // sensor_x/sensor_y of the tracks are exact.
+  CHECK(jsonValue(json({"--frame", "sensor"}), "mota") == 1);
+  CHECK(jsonValue(json({"--threshold", "0.85"}), "motp_m") == Approx(0.8));
+  const std::string follow = json({"--following", "2", "--threshold", "0.85"});
+  CHECK(jsonValue(follow, "truths") == 10);
+  CHECK(jsonValue(follow, "false_positives") == 0);
+  CHECK(follow.find("\"identity\": null") != std::string::npos);
+  // Two runs: the same truth twice, tracks 0.1 m and 0.8 m off.
+  writeFile(dir + "/good.csv", tracksCsv(0.1));
+  const auto mc = runHost({"eval", "--truth", truth, "--tracks", dir + "/good.csv", "--truth",
+                           truth, "--tracks", off, "--json"});
+  REQUIRE(mc.exit_code == 0);
+  CHECK(jsonValue(mc.output, "runs") == 2);
+  CHECK(jsonValue(mc.output, "truths") == 38);
+  CHECK(jsonValue(mc.output, "matches") == 19);
+  CHECK(jsonValue(mc.output, "nees_point_upper") == Approx(11.143 / 2).epsilon(1e-3));
+}
+
+TEST_CASE("eval scores detections against truth legs", "[eval_cli]") {
+  const std::string dir = freshDir("eval_cli_detections");
+  writeFile(dir + "/truth.csv", truthCsv());
+  // Frame 0 only: one detection 5 cm from person 1's left leg, one 30 cm from its right leg.
+  writeFile(dir + "/det.csv",
+            "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta\n"
+            "100.000000,0,0.05,0.1,1.05,0.1,0.9,,,\n100.000000,0,0.3,-0.1,1.3,-0.1,0.8,,,\n");
+  const auto r = runHost({"eval", "--truth", dir + "/truth.csv", "--detections", dir + "/det.csv",
+                          "--legs", "--json"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(jsonValue(r.output, "tp") == 1);
+  CHECK(jsonValue(r.output, "fp") == 1);
+  CHECK(jsonValue(r.output, "fn") == 37);  // 40 legs, 2 of them hidden in the last frame
+  CHECK(jsonValue(r.output, "precision") == Approx(0.5));
+  CHECK(jsonValue(r.output, "mean_distance_m") == Approx(0.05));
+  const auto text =
+      runHost({"eval", "--truth", dir + "/truth.csv", "--detections", dir + "/det.csv", "--legs"});
+  CHECK_THAT(text.output, Catch::Contains("precision           0.5000"));
+}
+
+TEST_CASE("eval rejects bad input with one line and exit 2", "[eval_cli]") {
+  const std::string dir = freshDir("eval_cli_errors");
+  writeFile(dir + "/truth.csv", truthCsv());
+  writeFile(dir + "/tracks.csv", tracksCsv(0.1));
+  std::string bad = tracksCsv(0.1);
+  bad.replace(bad.find("\n100.000000,0,7,0.1000") + 16, 6, "abc");
+  writeFile(dir + "/bad.csv", bad);
+  const std::string truth = dir + "/truth.csv";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--truth", dir + "/missing.csv", "--tracks", dir + "/tracks.csv"},
+       "error: " + dir + "/missing.csv: cannot open (no such file?)"},
+      {{"--truth", truth, "--tracks", dir + "/bad.csv"},
+       "error: " + dir + "/bad.csv:2: column 'x': 'abc' is not a number"},
+      {{"--truth", truth, "--tracks", dir + "/tracks.csv", "--treshold", "1"},
+       "error: pedtrack eval: unrecognised option '--treshold' (see `pedtrack eval --help`)"},
+      {{"--truth", truth, "--tracks", dir + "/tracks.csv", "--frame", "robot"},
+       "error: pedtrack eval: --frame: 'robot' is not one of fixed, sensor (see `pedtrack eval "
+       "--help`)"},
+      {{"--truth", truth},
+       "error: pedtrack eval: give either --tracks or --detections (see "
+       "`pedtrack eval --help`)"},
+  };
+  for (const auto& [args, expected] : cases) {
+    std::vector<std::string> all = {"eval"};
+    all.insert(all.end(), args.begin(), args.end());
+    const auto r = runHost(all);
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output == expected + "\n");
+  }
+}
+
+#ifdef PEDTRACK_WITH_ROSBAG
+TEST_CASE("eval scores detections against the labelled legs of a leg_tracker bag", "[eval_cli]") {
+  const std::string bag_path = sharedDataDir() + "/leg_tracker/positive_6_extracted.bag";
+  requireData(sharedDataDir().empty() ? std::string() : bag_path);
+  // The labels as leg_tracker's trainer reads them: the unstamped PoseArray before each scan.
+  struct Scan {
+    double t;
+    std::vector<std::pair<double, double>> legs;
+  };
+  std::vector<Scan> scans;
+  {
+    rosbag::Bag bag(bag_path);
+    rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{"/training_scan",
+                                                                       "/leg_cluster_positions"}));
+    std::vector<std::pair<double, double>> pending;
+    for (const auto& m : view) {
+      if (auto a = m.instantiate<geometry_msgs::PoseArray>()) {
+        pending.clear();
+        for (const auto& p : a->poses) pending.emplace_back(p.position.x, p.position.y);
+      } else if (auto s = m.instantiate<sensor_msgs::LaserScan>()) {
+        scans.push_back({s->header.stamp.toSec(), pending});
+        pending.clear();
+      }
+    }
+  }
+  REQUIRE(scans.size() == 187);
+  const std::string dir = freshDir("eval_cli_bag");
+  // Each leg moved `off` metres away from the nearest other leg of its scan (or radially), so
+  // the shifted point stays nearest to its own leg.
+  auto write = [&](double off) {
+    std::string s = "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta\n";
+    std::size_t legs = 0;
+    for (std::size_t k = 0; k < scans.size(); ++k)
+      for (std::size_t i = 0; i < scans[k].legs.size(); ++i, ++legs) {
+        const auto [x, y] = scans[k].legs[i];
+        double ax = x, ay = y, best = 1e9;
+        for (std::size_t o = 0; o < scans[k].legs.size(); ++o) {
+          const double d = std::hypot(x - scans[k].legs[o].first, y - scans[k].legs[o].second);
+          if (o != i && d < best)
+            best = d, ax = x - scans[k].legs[o].first, ay = y - scans[k].legs[o].second;
+        }
+        const double n = std::hypot(ax, ay);
+        const double px = x + off * ax / n, py = y + off * ay / n;
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "%.6f,%zu,%.4f,%.4f,%.4f,%.4f,1,,,\n", scans[k].t, k, px, py,
+                      px, py);
+        s += buf;
+      }
+    writeFile(dir + "/detections.csv", s);
+    return legs;
+  };
+  auto eval = [&]() {
+    const auto r =
+        runHost({"eval", "--truth", bag_path, "--detections", dir + "/detections.csv", "--json"});
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    return r.output;
+  };
+  const std::size_t legs = write(0.05);
+  CHECK(legs == 303);
+  std::string j = eval();
+  CHECK(jsonValue(j, "frames") == 187);
+  CHECK(jsonValue(j, "truth_points") == 303);
+  CHECK(jsonValue(j, "precision") == 1);
+  CHECK(jsonValue(j, "recall") == 1);
+  CHECK(jsonValue(j, "mean_distance_m") == Approx(0.05).margin(1e-4));
+  write(0.15);
+  j = eval();
+  CHECK(jsonValue(j, "precision") == 0);
+  CHECK(jsonValue(j, "recall") == 0);
+  CHECK(jsonValue(j, "fp") == 303);
+}
+#endif
+
+TEST_CASE("eval scores a simulated run: the truth as tracks, then a shifted copy", "[eval_cli]") {
+  const std::string dir = freshDir("eval_sim");
+  REQUIRE(runHost({"sim", std::string(PEDTRACK_SOURCE_DIR) + "/configs/scenarios/p4_crossing.ini",
+                   "--out", dir, "-q"})
+              .exit_code == 0);
+  // Tracks = the truth with ids 100+, shifted `dx` m in x, in tracks.csv layout.
+  auto tracksFrom = [&](double dx, const std::string& path) {
+    std::string s = kTracksHeader;
+    const auto rows = lines(readFile(dir + "/truth.csv"));
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      double t, x, y, sx, sy, yaw, vx, vy, a, b;
+      int frame, id;
+      REQUIRE(std::sscanf(rows[i].c_str(), "%lf,%d,%d,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &t,
+                          &frame, &id, &x, &y, &sx, &sy, &yaw, &vx, &vy, &a, &b) == 12);
+      s += fmt("%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,,,,1,,confirmed,\n", t,
+               frame, id + 100, x + dx, y, sx, sy, yaw, vx, vy, a, b);
+    }
+    writeFile(path, s);
+  };
+  tracksFrom(0, dir + "/exact.csv");
+  tracksFrom(0.2, dir + "/shifted.csv");
+  const auto exact =
+      runHost({"eval", "--truth", dir + "/truth.csv", "--tracks", dir + "/exact.csv", "--json"});
+  REQUIRE(exact.exit_code == 0);
+  CHECK(jsonValue(exact.output, "mota") == 1);
+  CHECK(jsonValue(exact.output, "motp_m") == 0);
+  CHECK(jsonValue(exact.output, "id_switches") == 0);
+  CHECK(jsonValue(exact.output, "idf1") == 1);
+  // Rows with no return (the far person hidden for 5 frames, the near one still outside the
+  // field of view) are unscored: their tracks are absorbed, neither valid nor false positives.
+  int hidden = 0;
+  for (const auto& row : lines(readFile(dir + "/truth.csv"))) {
+    std::size_t pos = 0;
+    for (int c = 0; c < 13; ++c) pos = row.find(',', pos) + 1;
+    hidden += row.compare(pos, 2, "0,") == 0;
+  }
+  CHECK(hidden >= 5);
+  CHECK(jsonValue(exact.output, "unscored_matches") == hidden);
+  const auto shifted =
+      runHost({"eval", "--truth", dir + "/truth.csv", "--tracks", dir + "/shifted.csv", "--json"});
+  REQUIRE(shifted.exit_code == 0);
+  CHECK(jsonValue(shifted.output, "mota") == 1);
+  CHECK(jsonValue(shifted.output, "motp_m") == Approx(0.2).margin(1e-4));
+  CHECK(jsonValue(shifted.output, "position_rmse_m") == Approx(0.2).margin(1e-4));
+  // Beyond a 0.15 m threshold every scored truth is missed and every track is a false positive.
+  const auto strict = runHost({"eval", "--truth", dir + "/truth.csv", "--tracks",
+                               dir + "/shifted.csv", "--threshold", "0.15", "--json"});
+  CHECK(jsonValue(strict.output, "mota") < -0.9);
+}
