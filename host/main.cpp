@@ -20,7 +20,10 @@ const char* kUsage =
     "  run PIPELINE.ini   run a pipeline (--input FILE replays a rawlog or bag through it)\n"
     "  plugins [NAME]     list plugins, or show every parameter of one\n"
     "  import INPUT       convert a ROS1 bag or rawlog to a rawlog (--topic selects topics)\n"
+    "  sim SCENARIO.ini   simulate a scene into a rawlog plus truth.csv\n"
     "  bench              measure replay throughput (Release build)\n"
+    "  eval               score tracks (MOTA, IDF1, HOTA, NEES) or detections vs truth\n"
+    "  render             draw a run's tracks over its rawlog: a PNG or an MP4 video\n"
     "\n"
     "`pedtrack <command> --help` shows a command's options. Exit codes: 0 success, 1 failure\n"
     "while running, 2 bad input (pipeline file, option, missing file).\n";
@@ -44,6 +47,9 @@ int main(int argc, char** argv) {
     if (cmd == "plugins") return cli::pluginsCommand(args);
     if (cmd == "import") return cli::importCommand(args);
     if (cmd == "bench") return cli::benchCommand(args);
+    if (cmd == "eval") return cli::evalCommand(args);
+    if (cmd == "sim") return cli::simCommand(args);
+    if (cmd == "render") return cli::renderCommand(args);
     std::cerr << "error: unknown command '" << cmd << "' (see `pedtrack --help`)\n";
     return exit_code::kBadInput;
   } catch (const ConfigError& e) {

@@ -6,6 +6,7 @@ packages=(
   libmrpt-dev mrpt-apps mrpt-common            # MRPT 2.5: observations, config, drivers, rawlog-edit, sample datasets
   libboost-filesystem-dev libboost-program-options-dev
   catch2
+  libopencv-dev                                # pedtrack render: drawing, PNG, MP4 (FFmpeg backend)
   librosbag-storage-dev libmrpt-ros1bridge-dev  # ROS1 bag replay
   libtf2-dev libtf2-msgs-dev libsensor-msgs-dev libnav-msgs-dev
 )

@@ -1,0 +1,206 @@
+// `pedtrack render`: top-view pictures (PNG) and videos (MP4) of a rawlog with the tracks, truth
+// and detections of a run drawn over it. The drawing lives in render/.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "commands.h"
+#include "options.h"
+#include "pedtrack/errors.h"
+#include "pedtrack/pipeline.h"
+#include "pedtrack/progress.h"
+#include "render/frame_source.h"
+#include "render/image_output.h"
+#include "render/object_index.h"
+#include "render/renderer.h"
+
+namespace pedtrack::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using render::FrameSource;
+using render::ObjectIndex;
+using render::StreamSummary;
+
+struct RenderArgs {
+  std::string rawlog, tracks, truth, detections, out, center;
+  std::vector<std::string> plugin_path;
+  long frame = -1, max_frames = -1;
+  double trail = 2, range = 0, fps = 0, ground_z = 0.15;
+  int size = 900;
+  bool quiet = false, video = false;
+};
+
+[[noreturn]] void bad(const std::string& what) {
+  throw ConfigError("pedtrack render: " + what);
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+void requireFile(const char* option, const std::string& path) {
+  if (!path.empty() && !fs::is_regular_file(path))
+    bad(std::string("--") + option + " '" + path + "': no such file");
+}
+
+std::optional<cv::Point2d> parseCenter(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  double x, y;
+  char extra;
+  if (std::sscanf(text.c_str(), " %lf , %lf %c", &x, &y, &extra) != 2 || !std::isfinite(x) ||
+      !std::isfinite(y))
+    bad("--center '" + text + "': expected x,y in metres (fixed frame), e.g. --center 2.5,-1");
+  return cv::Point2d(x, y);
+}
+
+/// Every check that needs no data, so bad input stops before anything is read or written.
+void validate(RenderArgs& a) {
+  const std::string ext = lower(fs::path(a.out).extension().string());
+  if (ext != ".png" && ext != ".mp4")
+    bad("--out '" + a.out + "': unknown extension '" + ext + "' (expected .png or .mp4)");
+  a.video = ext == ".mp4";
+  if (a.video && a.frame >= 0)
+    bad("--frame: applies to .png output only (an .mp4 has every frame)");
+  if (a.frame < -1) bad("--frame " + std::to_string(a.frame) + ": must be >= 0");
+  if (a.size < 100 || a.size > 8000)
+    bad("--size " + std::to_string(a.size) + ": expected 100..8000 px");
+  if (a.range < 0 || !std::isfinite(a.range)) bad("--range: must be > 0 m (0: fit the data)");
+  if (a.fps < 0 || a.fps > 240) bad("--fps: expected 1..240 (0: the data rate)");
+  if (a.trail < 0) bad("--trail: must be >= 0 s");
+  if (a.max_frames == 0) bad("--max-frames 0: nothing to render");
+  requireFile("rawlog", a.rawlog);
+  requireFile("tracks", a.tracks);
+  requireFile("truth", a.truth);
+  requireFile("detections", a.detections);
+}
+
+/// Positions the default view must hold: every track and true position, and the sensor's path
+/// with 4 m around it, so the points near the sensor show even where it reaches the edge.
+std::vector<cv::Point2d> mustSee(const render::Scene& s) {
+  std::vector<cv::Point2d> pts;
+  for (const auto& p : s.sensor_path) {
+    pts.emplace_back(p.x - 4, p.y - 4);
+    pts.emplace_back(p.x + 4, p.y + 4);
+  }
+  for (const ObjectIndex* idx : {s.tracks, s.truth})
+    if (idx)
+      for (const auto& r : idx->rows()) pts.emplace_back(r.x, r.y);
+  return pts;
+}
+
+}  // namespace
+
+int renderCommand(const std::vector<std::string>& args) {
+  RenderArgs a;
+  po::options_description opts("options");
+  opts.add_options()("rawlog", po::value(&a.rawlog)->required(), "the rawlog the run replayed")(
+      "tracks", po::value(&a.tracks), "tracks.csv of the run (optional: e.g. truth only)")(
+      "truth", po::value(&a.truth), "truth.csv (simulated ground truth), drawn as outlines")(
+      "detections", po::value(&a.detections), "detections.csv, drawn as crosses")(
+      "out", po::value(&a.out)->required(), "output: FILE.png (one frame / overlay) or FILE.mp4")(
+      "frame", po::value(&a.frame)->default_value(-1),
+      "PNG of this frame index (default: overlay of the whole run)")(
+      "trail", po::value(&a.trail)->default_value(2.0), "seconds of track history behind a frame")(
+      "size", po::value(&a.size)->default_value(900), "image side in pixels (square)")(
+      "range", po::value(&a.range)->default_value(0.0),
+      "half-width of the view in metres (0: fit tracks, truth and sensor path, at least 8)")(
+      "center", po::value(&a.center), "view centre x,y in metres (default: first sensor position)")(
+      "fps", po::value(&a.fps)->default_value(0.0),
+      "video frame rate (0: the data rate, clamped to 1..60)")(
+      "ground-z", po::value(&a.ground_z)->default_value(0.15, "0.15"),
+      "points lower than this (m, robot frame) are drawn as ground")(
+      "max-frames", po::value(&a.max_frames)->default_value(-1),
+      "use only the first N frames (-1: all)")(
+      "plugin-path", po::value(&a.plugin_path)->composing(), "extra plugin directory (repeatable)")(
+      "quiet,q", "no progress output");
+  po::positional_options_description pos;
+  po::variables_map vm;
+  if (!parseOptions("render",
+                    "--rawlog R [--tracks T] [--truth G] --out FILE.png|FILE.mp4 [options]", opts,
+                    pos, args, vm))
+    return 0;
+  a.quiet = vm.count("quiet") > 0;
+  validate(a);
+  const std::optional<cv::Point2d> center = parseCenter(a.center);
+
+  // Inputs, then one cheap pass over the frames (no clouds) for the sensor path and data rate.
+  const ObjectIndex tracks(a.tracks.empty() ? std::vector<ObjectRow>{}
+                                            : readObjectTable(a.tracks).rows);
+  std::unique_ptr<ObjectIndex> truth, detections;
+  if (!a.truth.empty()) truth = std::make_unique<ObjectIndex>(readObjectTable(a.truth).rows);
+  if (!a.detections.empty())
+    detections = std::make_unique<ObjectIndex>(readDetectionTable(a.detections).rows);
+
+  const long limit = a.frame >= 0 ? a.frame + 1 : a.max_frames;
+  if (a.max_frames >= 0 && a.frame >= a.max_frames)
+    bad("--frame " + std::to_string(a.frame) + ": beyond --max-frames " +
+        std::to_string(a.max_frames));
+  StreamSummary summary;
+  // The source outlives `kept`: a plugin may create the observations (rosbag's point clouds),
+  // and their code goes away with it.
+  FrameSource source(a.rawlog, a.plugin_path);
+  Frame frame, kept;  // kept: the frame a PNG shows (--frame N, or the last one)
+  {
+    Progress progress("render: reading", !a.quiet);
+    while ((limit < 0 || static_cast<long>(summary.frames) < limit) && source.next(frame)) {
+      if (summary.frames == 0) summary.t_first = frame.t;
+      summary.t_last = frame.t;
+      summary.sensor_path.emplace_back(frame.sensor_pose.x(), frame.sensor_pose.y());
+      ++summary.frames;
+      kept = frame;
+      progress.update(summary.frames, source.progress());
+    }
+    // Before done(): bad input stays a single line.
+    if (summary.frames == 0) throw DataError(a.rawlog + ": no range frames to render");
+    if (a.frame >= static_cast<long>(summary.frames))
+      bad("--frame " + std::to_string(a.frame) + ": '" + a.rawlog + "' has only " +
+          std::to_string(summary.frames) + " frames");
+    progress.done(summary.frames);
+  }
+
+  render::Scene scene;
+  scene.tracks = &tracks;
+  scene.truth = truth.get();
+  scene.detections = detections.get();
+  scene.sensor_path = summary.sensor_path;
+  scene.t_first = summary.t_first;
+  scene.ground_z = a.ground_z;
+  scene.trail_s = a.trail;
+  scene.video = a.video;
+  scene.view = render::fitView(center.value_or(summary.sensor_path.front()), a.range, a.size,
+                               mustSee(scene));
+
+  const fs::path parent = fs::path(a.out).parent_path();
+  if (!parent.empty()) fs::create_directories(parent);
+  if (!a.video) {
+    render::writePng(a.out, a.frame >= 0 ? render::renderFrame(scene, kept)
+                                         : render::renderOverlay(scene, kept));
+    if (!a.quiet) std::fprintf(stderr, "render: wrote %s\n", a.out.c_str());
+    return exit_code::kOk;
+  }
+
+  const double fps = a.fps > 0 ? a.fps : summary.rate();
+  render::Mp4Writer video(a.out, fps, a.size);
+  installStopHandlers();  // Ctrl-C ends the video early but leaves a playable file
+  FrameSource replay(a.rawlog, a.plugin_path);
+  Frame shown;  // after `replay`, which must outlive its observations
+  Progress progress("render", !a.quiet);
+  while (video.frames() < summary.frames && !Pipeline::stopRequested() && replay.next(shown)) {
+    video.write(render::renderFrame(scene, shown));
+    progress.update(video.frames(), double(video.frames()) / summary.frames);
+  }
+  video.close();
+  progress.done(video.frames());
+  if (!a.quiet)
+    std::fprintf(stderr, "render: wrote %s (%zu frames, %.2f fps, %dx%d)\n", a.out.c_str(),
+                 video.frames(), fps, a.size, a.size);
+  return exit_code::kOk;
+}
+
+}  // namespace pedtrack::cli

@@ -1,0 +1,64 @@
+#pragma once
+// The layers of a picture, each drawn by one function onto a BGR image. Colours come from
+// palette.h; positions are fixed-frame metres mapped through a View.
+#include <mrpt/poses/CPose3D.h>
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "pedtrack/frame.h"
+#include "pedtrack/object_table.h"
+#include "view.h"
+
+namespace pedtrack::render {
+
+// ---- map: draw_map.cpp ----------------------------------------------------------------------
+/// Metric grid (a line every metre, or coarser when lines would crowd) with labelled major lines.
+void drawGrid(cv::Mat& img, const View& view);
+/// A bar of a round length with its label, top right.
+void drawScaleBar(cv::Mat& img, const View& view);
+
+struct PointCounts {
+  std::size_t ground = 0, other = 0;
+};
+/// The frame's cloud in the fixed frame: points lower than `ground_z` in the robot frame grey,
+/// the others light blue. 2D scans are horizontal slices, so their points are never ground.
+PointCounts drawPoints(cv::Mat& img, const View& view, const Frame& frame, double ground_z);
+/// The sensor as a triangle pointing along its heading.
+void drawSensor(cv::Mat& img, const View& view, const mrpt::poses::CPose3D& sensor_pose);
+/// A thin polyline through fixed-frame points (the sensor's path).
+void drawPolyline(cv::Mat& img, const View& view, const std::vector<cv::Point2d>& path,
+                  const cv::Scalar& color, int thickness);
+
+// ---- objects: draw_objects.cpp --------------------------------------------------------------
+/// A track's 95 % covariance ellipse, torso ellipse (or a 0.25 m circle) and 1 s velocity arrow.
+void drawTrackBody(cv::Mat& img, const View& view, const ObjectRow& track);
+/// A track's centre dot and id label; drawn after every body so no other layer hides them.
+void drawTrackMarker(cv::Mat& img, const View& view, const ObjectRow& track);
+/// A true person: thin torso outline, leg circles when known, small id label.
+void drawTruth(cv::Mat& img, const View& view, const ObjectRow& truth);
+/// A detection: a tilted cross.
+void drawDetection(cv::Mat& img, const View& view, const ObjectRow& detection, int size_px = 0);
+
+enum class LineStyle { Solid, Dashed };
+/// An object's path through its rows (time order).
+void drawPath(cv::Mat& img, const View& view, const std::vector<const ObjectRow*>& path,
+              const cv::Scalar& color, int thickness, LineStyle style);
+/// Start (hollow circle) and end (filled dot) markers of a path.
+void drawPathEnds(cv::Mat& img, const View& view, const std::vector<const ObjectRow*>& path,
+                  const cv::Scalar& color, int radius_px);
+
+// ---- text: draw_text.cpp --------------------------------------------------------------------
+/// Text with a dark outline, legible on points and grid alike. `origin` is the baseline start.
+void drawText(cv::Mat& img, const std::string& text, cv::Point origin, const cv::Scalar& color,
+              double scale = 0.45);
+/// Lines of text on a panel in the top-left corner.
+void drawInfoPanel(cv::Mat& img, const std::vector<std::string>& lines);
+/// What each mark means, bottom left, or with `pick_corner` in the bottom corner that hides less
+/// of the picture (not in videos, where a legend jumping between corners distracts). `overlay`
+/// adds the path markers.
+void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detections,
+                bool pick_corner);
+
+}  // namespace pedtrack::render
