@@ -51,18 +51,48 @@ void writeSyntheticLog(const std::string& path, long scans, int beams) {
   }
 }
 
+// The `sim` source alone: ray casting plus building the MRPT observations, one thread.
+int benchScenario(const std::string& scenario, const std::string& out,
+                  const std::vector<std::string>& plugin_path) {
+  if (!std::filesystem::is_regular_file(scenario))
+    throw ConfigError("--scenario '" + scenario + "': no such file");
+  PluginRegistry registry(PluginRegistry::defaultSearchPath(plugin_path));
+  const PipelineConfig config =
+      PipelineConfig::fromText("[pipeline]\nstages = source\n[source]\nplugin = sim\nscenario = " +
+                                   std::filesystem::absolute(scenario).string() + "\n",
+                               "pedtrack bench", {}, registry);
+  Pipeline pipeline(config);
+  RunOptions run;
+  run.out_dir = out;
+  run.progress = false;
+  const RunSummary s = pipeline.run(run);
+  if (s.status == "error") throw DataError(s.error);
+  const StageStats& src = s.stages.front();
+  std::printf("build: %s, %u hardware threads\n", PEDTRACK_BUILD_TYPE,
+              std::thread::hardware_concurrency());
+  std::printf(
+      "simulation (sim source, one thread, no stages): %zu frames in %.3f s = %.0f "
+      "frames/s\n",
+      s.frames_read, s.wall_time_s, s.frames_read / s.wall_time_s);
+  std::printf("per frame: mean %.3f ms, p50 %.3f ms, p99 %.3f ms, max %.3f ms\n", src.mean(),
+              src.percentile(50), src.percentile(99), src.max());
+  return exit_code::kOk;
+}
+
 }  // namespace
 
 int benchCommand(const std::vector<std::string>& args) {
   po::options_description opts("options");
   long scans = 100000;
   int beams = 1081;
-  std::string input, out;
+  std::string input, out, scenario;
   std::vector<std::string> plugin_path;
   opts.add_options()("scans", po::value(&scans)->default_value(100000),
                      "synthetic 2D scans to replay")(
       "beams", po::value(&beams)->default_value(1081), "beams per synthetic scan")(
       "input", po::value(&input), "bench this rawlog instead of a synthetic one")(
+      "scenario", po::value(&scenario),
+      "bench the simulator on this scenario instead (frames simulated per second)")(
       "out", po::value(&out), "directory for run.json")(
       "plugin-path", po::value(&plugin_path)->composing(), "extra plugin directory (repeatable)");
   po::positional_options_description pos;
@@ -71,6 +101,7 @@ int benchCommand(const std::vector<std::string>& args) {
   if (scans < 1 || beams < 2)
     throw ConfigError("pedtrack bench: --scans must be >= 1 and --beams >= 2");
 
+  if (!scenario.empty()) return benchScenario(scenario, out, plugin_path);
   std::string log = input;
   if (log.empty()) {
     log = (std::filesystem::temp_directory_path() /

@@ -298,4 +298,11 @@ TEST_CASE("the sim plugin drives a pipeline and writes the truth", "[sim][cli]")
   for (const auto& row : readObjectTable(dir + "/truth.csv").rows)
     if (row.id == 1 && row.visible_points == 0) ++hidden;
   CHECK(hidden == 5);
+  // The simulator benchmark runs the same scenario (its figures are for Release builds only).
+  const auto bench =
+      runHost({"bench", "--scenario",
+               std::string(PEDTRACK_SOURCE_DIR) + "/configs/scenarios/p4_crossing.ini"});
+  CHECK(bench.exit_code == 0);
+  CHECK_THAT(bench.output,
+             Catch::Contains("simulation (sim source") && Catch::Contains(": 80 frames"));
 }
