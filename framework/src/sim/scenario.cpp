@@ -214,6 +214,7 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
   if (se.getDouble("range_noise") >= 0) s.sensor.range_noise = se.getDouble("range_noise");
   s.sensor.dropout = se.getDouble("dropout");
   if (!se.getString("label").empty()) s.sensor.label = se.getString("label");
+  s.sensor.sweep_motion = se.getBool("sweep_motion");
   if (s.sensor.is3d && (se.getDouble("fov") > 0 || se.getDouble("resolution") > 0))
     throw ConfigError(se.where("fov") +
                       ": the VLP-16's geometry is fixed (fov/resolution are "

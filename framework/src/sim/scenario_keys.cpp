@@ -67,6 +67,8 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys(
            P::real("range_noise", -1, "m", -1, 1, "1σ range noise (-1: model default)"),
            P::real("dropout", 0, "", 0, 1, "probability that a return is lost"),
            P::text("label", std::string(""), "MRPT sensorLabel (default LASER / VELODYNE)"),
+           P::boolean("sweep_motion", false,
+                      "people move during the sweep: each is seen when the beam passes it"),
        }},
       {"robot",
        cat({P::real("x", 0, "m", -kInf, kInf, "start position"),

@@ -43,6 +43,16 @@ double velodyneToMrptAngle(int units) {
 
 }  // namespace
 
+double sweepTime(const SensorSpec& spec, double azimuth) {
+  const double period = 1.0 / spec.rate;
+  if (spec.is3d) {
+    const double cw = std::fmod(-azimuth + 4 * M_PI, 2 * M_PI);  // clockwise from forward
+    return cw / (2 * M_PI) * period;
+  }
+  const double from_start = std::fmod(azimuth + 0.5 * spec.fov + 4 * M_PI, 2 * M_PI);
+  return std::min(from_start, spec.fov) / (2 * M_PI) * period;
+}
+
 SensorSpec sensorDefaults(const std::string& model) {
   SensorSpec s;
   s.model = model;

@@ -52,9 +52,20 @@ bool Simulator::next(SimFrame& f) {
     if (tr + 1e-9 < p.appear) continue;
     MotionSample ms = p.path.at(tr - p.appear);
     gaits_[i].advance(ms, p.body);
-    const double gz = s_.ground.height(ms.x, ms.y);
-    BodyPose pose = poseBody(p.body, ms, gaits_[i], gz, s_.leg_height, p.id);
+    // The body the beam meets: posed when the sweep passes its bearing (sweep_motion), else at
+    // the stamp. The truth row stays at the stamp either way.
+    MotionSample seen = ms;
+    if (s_.sensor.sweep_motion) {
+      double sx = 0, sy = 0, sz = 0;
+      f.sensor_true.inverseComposePoint(ms.x, ms.y, f.sensor_true.z(), sx, sy, sz);
+      const double dt = sweepTime(s_.sensor, std::atan2(sy, sx));
+      seen = p.path.at(tr + dt - p.appear);
+    }
+    const double gz = s_.ground.height(seen.x, seen.y);
+    BodyPose pose = poseBody(p.body, seen, gaits_[i], gz, s_.leg_height, p.id);
     scene.insert(scene.end(), pose.parts.begin(), pose.parts.end());
+    if (s_.sensor.sweep_motion)  // truth legs at the stamp
+      pose = poseBody(p.body, ms, gaits_[i], s_.ground.height(ms.x, ms.y), s_.leg_height, p.id);
     TruthRow r;
     r.id = p.id;
     r.x = ms.x;

@@ -21,8 +21,14 @@ struct SensorSpec {
   double range_noise = 0;               ///< m, 1σ
   double dropout = 0;                   ///< probability that a return is lost
   std::string label;                    ///< MRPT sensorLabel
+  bool sweep_motion = false;            ///< pose people when the beam passes, not at the stamp
   mrpt::poses::CPose3D mount;           ///< sensor on the robot
 };
+
+/// Seconds after the scan's stamp at which the beam points at sensor-frame azimuth `azimuth`
+/// (rad, counter-clockwise): a VLP-16 turns clockwise from its forward axis once per scan; a 2D
+/// scanner sweeps counter-clockwise from -fov/2 and its mirror turns once per scan period.
+double sweepTime(const SensorSpec& spec, double azimuth);
 
 /// Datasheet defaults of a model (fov, resolution, ranges, rate, noise, label); throws
 /// ConfigError for an unknown model name.
