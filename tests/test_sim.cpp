@@ -375,3 +375,22 @@ TEST_CASE("sweep_motion poses a walker when the VLP-16 beam passes it", "[sim]")
   };
   CHECK(meanX("true") - meanX("false") == Approx(0.075).margin(0.015));
 }
+
+TEST_CASE("the social-force crowd keeps people apart and away from objects", "[sim]") {
+  const Scenario sc =
+      loadScenario(std::string(PEDTRACK_SOURCE_DIR) + "/configs/scenarios/crowd.ini");
+  REQUIRE(sc.people.size() == 20);
+  double closest = 1e9, moved = 0;
+  for (double t = 0; t <= sc.duration; t += 0.1) {
+    for (std::size_t i = 0; i < sc.people.size(); ++i) {
+      const MotionSample a = sc.people[i].path.at(t);
+      moved += std::hypot(a.vx, a.vy) * 0.1;
+      for (std::size_t j = i + 1; j < sc.people.size(); ++j) {
+        const MotionSample b = sc.people[j].path.at(t);
+        closest = std::min(closest, std::hypot(a.x - b.x, a.y - b.y));
+      }
+    }
+  }
+  CHECK(closest > 0.3);                                 // torsos never overlap
+  CHECK(moved / sc.people.size() > 0.5 * sc.duration);  // and they do walk (m per person)
+}

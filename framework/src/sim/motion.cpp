@@ -241,6 +241,17 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
   return tr;
 }
 
+Trajectory Trajectory::fromSamples(std::vector<MotionSample> samples) {
+  Trajectory tr;
+  tr.samples_ = std::move(samples);
+  auto& S = tr.samples_;
+  for (std::size_t k = 0; k < S.size(); ++k) {
+    const std::size_t a = k ? k - 1 : k, c = k + 1 < S.size() ? k + 1 : k;
+    if (S[c].t > S[a].t) S[k].omega = wrap(S[c].yaw - S[a].yaw) / (S[c].t - S[a].t);
+  }
+  return tr;
+}
+
 MotionSample Trajectory::at(double t) const {
   if (samples_.empty()) return {};
   if (t <= 0) {

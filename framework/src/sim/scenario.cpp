@@ -12,6 +12,7 @@
 
 #include "pedtrack/errors.h"
 #include "pedtrack/pipeline_config.h"
+#include "pedtrack/sim/crowd.h"
 #include "pedtrack/text.h"
 
 namespace pedtrack::sim {
@@ -140,6 +141,69 @@ void addObject(Scenario& s, const std::string& type, double x, double y, const P
   }
 }
 
+// The [crowd]: random people, placed apart from each other and from the objects, moving by the
+// social force model (default) or by independent random-walk scripts.
+void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
+  const auto a = numbers(cr, "area", 4);
+  std::uniform_real_distribution<double> u01(0, 1);
+  auto in = [&](double lo, double hi) { return lo + (hi - lo) * u01(rng); };
+  const bool social = cr.getString("model") == "social_force";
+  std::vector<CircleObstacle> obstacles;
+  for (const Primitive& p : s.objects) {
+    Eigen::Vector3d c;
+    double r = 0;
+    p.bound(c, r);
+    const double bottom = p.shape == Shape::Sphere ? p.a.z() - p.ru : p.z0;
+    if (bottom > 1.8) continue;  // tree crowns: people walk under them
+    const double rxy = p.shape == Shape::Box                ? std::hypot(p.ru, p.rv)
+                       : p.shape == Shape::EllipticCylinder ? std::max(p.ru, p.rv)
+                                                            : p.ru;
+    obstacles.push_back({c.x(), c.y(), rxy});
+  }
+  std::vector<CrowdAgent> agents;
+  std::vector<PersonSpec> people;
+  for (long i = 0; i < cr.getInt("count"); ++i) {
+    PersonSpec ps;
+    ps.id = static_cast<int>(s.people.size() + people.size()) + 1;
+    ps.section = "crowd";
+    ps.body.alpha = in(0.17, 0.24);
+    ps.body.beta = in(0.10, 0.15);
+    ps.body.height = in(1.55, 1.92);
+    ps.body.step_length = in(0.55, 0.75);
+    CrowdAgent ag;
+    ag.speed = in(cr.getDouble("speed_min"), cr.getDouble("speed_max"));
+    ag.radius = ps.body.alpha + 0.05;
+    // Start clear of everyone and everything (a few hundred tries, then anywhere).
+    for (int tries = 0; tries < 500; ++tries) {
+      ag.x = in(a[0], a[2]);
+      ag.y = in(a[1], a[3]);
+      bool clear = true;
+      for (const auto& o : agents) clear = clear && std::hypot(o.x - ag.x, o.y - ag.y) > 0.9;
+      for (const auto& o : obstacles)
+        clear = clear && std::hypot(o.x - ag.x, o.y - ag.y) > o.r + ag.radius + 0.2;
+      if (clear) break;
+    }
+    ag.yaw = in(-M_PI, M_PI);
+    if (!social) {
+      MotionLimits lim;
+      lim.speed = ag.speed;
+      lim.facing_rate = 150 * kDeg;
+      const std::string script =
+          randomWalkScript(static_cast<unsigned>(rng()), int(cr.getInt("legs")), a[0], a[1], a[2],
+                           a[3], cr.getDouble("max_stop"));
+      ps.path = Trajectory::fromScript(script, ag.x, ag.y, ag.yaw, lim, cr.where("area"));
+    }
+    agents.push_back(ag);
+    people.push_back(std::move(ps));
+  }
+  if (social) {
+    const CrowdArea area{a[0], a[1], a[2], a[3], cr.getDouble("max_stop")};
+    auto paths = simulateCrowd(agents, obstacles, &s.robot.path, s.duration, area, rng);
+    for (std::size_t i = 0; i < people.size(); ++i) people[i].path = std::move(paths[i]);
+  }
+  for (auto& p : people) s.people.push_back(std::move(p));
+}
+
 }  // namespace
 
 Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
@@ -254,30 +318,6 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
 
   std::mt19937 rng(static_cast<unsigned>(s.seed));
   std::uniform_real_distribution<double> u01(0, 1);
-  if (single.count("crowd")) {
-    const ParamSet& cr = single.at("crowd");
-    const auto a = numbers(cr, "area", 4);
-    auto in = [&](double lo, double hi) { return lo + (hi - lo) * u01(rng); };
-    for (long i = 0; i < cr.getInt("count"); ++i) {
-      PersonSpec ps;
-      ps.id = static_cast<int>(s.people.size()) + 1;
-      ps.section = "crowd";
-      ps.body.alpha = in(0.17, 0.24);
-      ps.body.beta = in(0.10, 0.15);
-      ps.body.height = in(1.55, 1.92);
-      ps.body.step_length = in(0.55, 0.75);
-      MotionLimits lim;
-      lim.speed = in(cr.getDouble("speed_min"), cr.getDouble("speed_max"));
-      lim.facing_rate = 150 * kDeg;
-      const double x = in(a[0], a[2]), y = in(a[1], a[3]), yaw = in(-M_PI, M_PI);
-      const std::string script =
-          randomWalkScript(static_cast<unsigned>(rng()), int(cr.getInt("legs")), a[0], a[1], a[2],
-                           a[3], cr.getDouble("max_stop"));
-      ps.path = Trajectory::fromScript(script, x, y, yaw, lim, cr.where("area"));
-      s.people.push_back(std::move(ps));
-    }
-  }
-
   for (const auto& [sec, p] : objects)
     addObject(s, p.getString("type"), p.getDouble("x"), p.getDouble("y"), &p, p.getDouble("x2"),
               p.getDouble("y2"), p.getDouble("radius"), p.getDouble("height"),
@@ -301,6 +341,7 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
                 0.3 + 0.5 * u01(rng), 0.15, 1.0 + u01(rng));
     }
   }
+  if (single.count("crowd")) addCrowd(s, single.at("crowd"), rng);
   return s;
 }
 

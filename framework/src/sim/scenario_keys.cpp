@@ -105,10 +105,13 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys(
       {"crowd",
        {
            P::integer("count", std::nullopt, "", 1, 10000, "people walking at random"),
+           P::choice("model", "social_force", {"social_force", "scripted"},
+                     "social_force: keep clear of each other, objects and the robot; scripted: "
+                     "independent random-walk scripts"),
            P::text("area", std::nullopt, "x0 y0 x1 y1 box they walk in"),
            P::real("speed_min", 0.8, "m/s", 0.05, 5, "slowest walking speed"),
            P::real("speed_max", 1.5, "m/s", 0.05, 5, "fastest walking speed"),
-           P::integer("legs", 30, "", 1, 10000, "random walk commands per person"),
+           P::integer("legs", 30, "", 1, 10000, "random walk commands per person (scripted)"),
            P::real("max_stop", 3, "s", 0, 100, "longest random stop"),
        }},
       {"object.NAME",

@@ -41,6 +41,9 @@ class Trajectory {
   static Trajectory fromScript(const std::string& script, double x, double y, double yaw,
                                const MotionLimits& limits, const std::string& where);
 
+  /// A trajectory already sampled every kDt from t = 0 (with velocities), e.g. by a crowd model.
+  static Trajectory fromSamples(std::vector<MotionSample> samples);
+
   /// State at time t (s since start), linearly interpolated; before the start the first sample,
   /// after the end the last one standing still.
   MotionSample at(double t) const;
