@@ -394,3 +394,38 @@ TEST_CASE("the social-force crowd keeps people apart and away from objects", "[s
   CHECK(closest > 0.3);                                 // torsos never overlap
   CHECK(moved / sc.people.size() > 0.5 * sc.duration);  // and they do walk (m per person)
 }
+
+TEST_CASE("legs swing at the gait's cadence and step length", "[sim]") {
+  // Truth legs of a walker seen at 50 Hz: the sagittal separation of the legs at the scan height
+  // crosses zero `cadence` times a second, with amplitude step_length scaled to that height.
+  auto gait = [](const std::string& extra, double& crossings_per_s, double& amplitude) {
+    Simulator s(scenarioFromText(
+        "[scenario]\nduration = 8\nleg_height = 0.4\n[sensor]\nmodel = custom2d\nz = 0.4\n"
+        "fov = 180\nresolution = 1\nmax_range = 10\nrate = 50\n"
+        "[person.a]\nx = 1\ny = 2\npath = straight\nlength = 30\nspeed = 1.2\n"
+        "step_length = 0.6\n" +
+            extra,
+        "t.ini"));
+    SimFrame f;
+    double last = 0, peak = 0;
+    int crossings = 0;
+    for (int k = 0; s.next(f); ++k) {
+      const TruthRow& r = f.truth.at(0);
+      const double sep = r.left_leg_x - r.right_leg_x;  // walking along +x
+      if (k >= 150) {                                   // from 3 s: at full speed
+        if (k > 150 && (sep > 0) != (last > 0)) ++crossings;
+        peak = std::max(peak, std::abs(sep));
+      }
+      last = sep;
+    }
+    crossings_per_s = crossings / 5.0;
+    amplitude = peak;
+  };
+  const double u = (0.4 - 0.08) / (0.50 * 1.70 - 0.08);  // leg_height along ankle→hip
+  double rate = 0, amp = 0;
+  gait("", rate, amp);
+  CHECK(rate == Approx(1.2 / 0.6).margin(0.25));  // derived cadence: speed / step length
+  CHECK(amp == Approx(0.6 * (1 - u)).margin(0.01));
+  gait("cadence = 1.6\n", rate, amp);
+  CHECK(rate == Approx(1.6).margin(0.25));
+}

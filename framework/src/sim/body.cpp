@@ -11,8 +11,11 @@ void GaitClock::advance(const MotionSample& s, const BodySpec& b) {
   last_t_ = s.t;
   const double v = std::hypot(s.vx, s.vy);
   // One stride (two steps) per 2·step_length walked: dφ/dt = π v / L. Turning in place shuffles
-  // the feet as if walking a quarter metre per radian.
-  const double rate = M_PI * (v + 0.25 * std::abs(s.omega)) / b.step_length;
+  // the feet as if walking a quarter metre per radian. A set cadence (steps/s) replaces the
+  // speed-derived one while moving: dφ/dt = π·cadence.
+  const double moving = v + 0.25 * std::abs(s.omega);
+  const double rate = b.cadence > 0 ? M_PI * b.cadence * std::clamp(moving / 0.3, 0.0, 1.0)
+                                    : M_PI * moving / b.step_length;
   phase_ = std::fmod(phase_ + rate * std::max(0.0, dt), 2 * M_PI);
   // Feet close when standing, open fully from a slow walk on.
   const double target = std::clamp(std::max(v / 0.6, std::abs(s.omega) / 3.0), 0.0, 1.0);

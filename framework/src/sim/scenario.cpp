@@ -77,6 +77,7 @@ BodySpec body(const ParamSet& p) {
   b.arm_swing = p.getDouble("arm_swing") * kDeg;
   b.step_length = p.getDouble("step_length");
   b.step_width = p.getDouble("step_width");
+  b.cadence = p.getDouble("cadence");
   b.leg_radius = p.getDouble("leg_radius");
   return b;
 }

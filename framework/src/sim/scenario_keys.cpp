@@ -25,6 +25,7 @@ std::vector<ParamSpec> bodyKeys() {
       P::real("arm_swing", 20, "deg", 0, 80, "arm swing amplitude at walking speed"),
       P::real("step_length", 0.65, "m", 0.1, 1.5, "distance between the feet at full stride"),
       P::real("step_width", 0.18, "m", 0.0, 0.6, "lateral distance between the feet"),
+      P::real("cadence", 0, "steps/s", 0, 5, "steps per second (0: speed / step_length)"),
       P::real("leg_radius", 0.055, "m", 0.02, 0.15, "leg radius"),
   };
 }

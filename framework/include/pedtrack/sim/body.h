@@ -17,6 +17,7 @@ struct BodySpec {
   double arm_swing = 0.35;    ///< rad, amplitude of the arm swing at full walking speed
   double step_length = 0.65;  ///< m, distance between the feet at the widest stride
   double step_width = 0.18;   ///< m, lateral distance between the feet
+  double cadence = 0;         ///< steps/s while walking; 0: speed / step_length
   double leg_radius = 0.055;  ///< m
   double arm_radius = 0.045;  ///< m
 };
