@@ -293,6 +293,12 @@ TEST_CASE("the sim plugin drives a pipeline and writes the truth", "[sim][cli]")
                    "--out", dir + "/sim", "-q"})
               .exit_code == 0);
   CHECK(readFile(dir + "/truth.csv") == readFile(dir + "/sim/truth.csv"));
+  // truth = auto (the default) puts it next to tracks.csv.
+  writeFile(dir + "/auto.ini", "[pipeline]\nstages = source\n[source]\nplugin = sim\nscenario = " +
+                                   std::string(PEDTRACK_SOURCE_DIR) +
+                                   "/configs/scenarios/p4_crossing.ini\n");
+  REQUIRE(runHost({"run", dir + "/auto.ini", "--out", dir + "/auto"}).exit_code == 0);
+  CHECK(readFile(dir + "/auto/truth.csv") == readFile(dir + "/sim/truth.csv"));
   // The P4 crossing hides the far person for about 1 s: 5 frames at 5 Hz with no return.
   int hidden = 0;
   for (const auto& row : readObjectTable(dir + "/truth.csv").rows)

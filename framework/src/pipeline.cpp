@@ -75,6 +75,8 @@ RunSummary Pipeline::run(const RunOptions& opt) {
     // A stale detections.csv of an earlier run would be read as this run's.
     std::filesystem::remove(opt.out_dir + "/detections.csv");
   }
+  source_->start(opt.out_dir);
+  for (auto& s : stages_) s->start(opt.out_dir);
   Progress progress("run", opt.progress);
   const auto start = Clock::now();
   std::size_t warnings = 0;

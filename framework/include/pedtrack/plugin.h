@@ -25,6 +25,9 @@ const char* toString(Category c);
 class Plugin {
  public:
   virtual ~Plugin();
+  /// Called once before the first frame with the run's output directory (empty when the run
+  /// writes no files). A plugin may put side outputs there (the sim source writes truth.csv).
+  virtual void start(const std::string& out_dir) { (void)out_dir; }
   /// Called once after the last frame, before outputs are closed.
   virtual void finish() {}
 };

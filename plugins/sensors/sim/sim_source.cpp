@@ -16,16 +16,21 @@ class SimSource : public Sensor {
  public:
   explicit SimSource(const PluginContext& ctx)
       : sim_(sim::loadScenario(ctx.params.getString("scenario"), ctx.params.getInt("seed"))),
-        realtime_(ctx.params.getString("rate") == "realtime") {
-    const std::string truth = ctx.params.getString("truth");
-    if (!truth.empty()) {
-      std::error_code ec;
-      if (const auto dir = std::filesystem::path(truth).parent_path(); !dir.empty())
-        std::filesystem::create_directories(dir, ec);
-      truth_.open(truth);
-      if (!truth_) throw ConfigError(ctx.params.where("truth") + ": cannot write '" + truth + "'");
-      truth_ << sim::truthCsvHeader() << '\n';
-    }
+        realtime_(ctx.params.getString("rate") == "realtime"),
+        truth_key_(ctx.params.getString("truth")),
+        where_(ctx.params.where("truth")) {}
+
+  void start(const std::string& out_dir) override {
+    // auto: next to the run's tracks.csv; none: nowhere; anything else: that path.
+    std::string path = truth_key_;
+    if (truth_key_ == "auto") path = out_dir.empty() ? "" : out_dir + "/truth.csv";
+    if (truth_key_ == "none" || path.empty()) return;
+    std::error_code ec;
+    if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty())
+      std::filesystem::create_directories(dir, ec);
+    truth_.open(path);
+    if (!truth_) throw ConfigError(where_ + ": cannot write '" + path + "'");
+    truth_ << sim::truthCsvHeader() << '\n';
   }
 
   bool next(Frame& frame) override {
@@ -52,6 +57,7 @@ class SimSource : public Sensor {
  private:
   sim::Simulator sim_;
   bool realtime_;
+  std::string truth_key_, where_;
   std::ofstream truth_;
   std::size_t done_ = 0;
   ReplayPacer pacer_;
@@ -67,7 +73,8 @@ PluginDescriptor describe() {
                          "random seed (-1: the scenario's own [scenario] seed)"),
       ParamSpec::choice("rate", "max", {"max", "realtime"},
                         "max: as fast as the pipeline runs; realtime: at the sensor's rate"),
-      ParamSpec::text("truth", std::string(), "also write the ground truth to this truth.csv"),
+      ParamSpec::text("truth", std::string("auto"),
+                      "ground truth CSV: auto = truth.csv in the run's --out, none, or a path"),
   };
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<SimSource>(ctx);
