@@ -51,6 +51,26 @@ void writeSyntheticLog(const std::string& path, long scans, int beams) {
   }
 }
 
+// Runs a source-only pipeline without progress output and prints its throughput: `what`
+// names the measurement, `unit` what a frame is ("scans", "frames").
+int runAndReport(const PipelineConfig& config, const std::string& out, const char* what,
+                 const char* unit) {
+  Pipeline pipeline(config);
+  RunOptions run;
+  run.out_dir = out;
+  run.progress = false;
+  const RunSummary s = pipeline.run(run);
+  if (s.status == "error") throw DataError(s.error);
+  const StageStats& src = s.stages.front();
+  std::printf("build: %s, %u hardware threads\n", PEDTRACK_BUILD_TYPE,
+              std::thread::hardware_concurrency());
+  std::printf("%s: %zu %s in %.3f s = %.0f %s/s\n", what, s.frames_read, unit, s.wall_time_s,
+              s.frames_read / s.wall_time_s, unit);
+  std::printf("source next(): mean %.4f ms, p50 %.4f ms, p99 %.4f ms, max %.4f ms\n", src.mean(),
+              src.percentile(50), src.percentile(99), src.max());
+  return exit_code::kOk;
+}
+
 // The `sim` source alone: ray casting plus building the MRPT observations, one thread.
 int benchScenario(const std::string& scenario, const std::string& out,
                   const std::vector<std::string>& plugin_path) {
@@ -61,22 +81,7 @@ int benchScenario(const std::string& scenario, const std::string& out,
       PipelineConfig::fromText("[pipeline]\nstages = source\n[source]\nplugin = sim\nscenario = " +
                                    std::filesystem::absolute(scenario).string() + "\n",
                                "pedtrack bench", {}, registry);
-  Pipeline pipeline(config);
-  RunOptions run;
-  run.out_dir = out;
-  run.progress = false;
-  const RunSummary s = pipeline.run(run);
-  if (s.status == "error") throw DataError(s.error);
-  const StageStats& src = s.stages.front();
-  std::printf("build: %s, %u hardware threads\n", PEDTRACK_BUILD_TYPE,
-              std::thread::hardware_concurrency());
-  std::printf(
-      "simulation (sim source, one thread, no stages): %zu frames in %.3f s = %.0f "
-      "frames/s\n",
-      s.frames_read, s.wall_time_s, s.frames_read / s.wall_time_s);
-  std::printf("per frame: mean %.3f ms, p50 %.3f ms, p99 %.3f ms, max %.3f ms\n", src.mean(),
-              src.percentile(50), src.percentile(99), src.max());
-  return exit_code::kOk;
+  return runAndReport(config, out, "simulation (sim source, one thread, no stages)", "frames");
 }
 
 }  // namespace
@@ -124,20 +129,7 @@ int benchCommand(const std::vector<std::string>& args) {
   ov.sets = {"source.rate=max"};
   const PipelineConfig config = PipelineConfig::fromText(
       "[pipeline]\nstages = source\n[source]\nplugin = rawlog\n", "pedtrack bench", ov, registry);
-  Pipeline pipeline(config);
-  RunOptions run;
-  run.out_dir = out;
-  run.progress = false;
-  const RunSummary s = pipeline.run(run);
-  if (s.status == "error") throw DataError(s.error);
-  const StageStats& src = s.stages.front();
-  std::printf("build: %s, %u hardware threads\n", PEDTRACK_BUILD_TYPE,
-              std::thread::hardware_concurrency());
-  std::printf("replay (host + rawlog reader, no stages): %zu scans in %.3f s = %.0f scans/s\n",
-              s.frames_read, s.wall_time_s, s.frames_read / s.wall_time_s);
-  std::printf("source next(): mean %.4f ms, p50 %.4f ms, p99 %.4f ms, max %.4f ms\n", src.mean(),
-              src.percentile(50), src.percentile(99), src.max());
-  return exit_code::kOk;
+  return runAndReport(config, out, "replay (host + rawlog reader, no stages)", "scans");
 }
 
 }  // namespace pedtrack::cli
