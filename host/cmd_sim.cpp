@@ -6,8 +6,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <memory>
 
 #include "commands.h"
 #include "options.h"
@@ -19,14 +19,17 @@
 namespace pedtrack::cli {
 namespace {
 
+// Markdown tables, one per section: readable in a terminal and pasted into the README as is.
 void printKeys() {
   for (const auto& [section, specs] : sim::scenarioKeys()) {
-    std::cout << "[" << section << "]\n";
+    std::cout << "\n**`[" << section
+              << "]`**\n\n| key | type | unit | default | range | meaning |\n"
+              << "|---|---|---|---|---|---|\n";
     for (const auto& p : specs) {
       std::string def = p.default_value ? *p.default_value : "(required)";
       if (def.empty()) def = "\"\"";
-      std::printf("  %-12s %-8s %-10s %-14s %s\n", p.name.c_str(), toString(p.type), p.unit.c_str(),
-                  def.c_str(), p.doc.c_str());
+      std::cout << "| `" << p.name << "` | " << toString(p.type) << " | " << p.unit << " | " << def
+                << " | " << p.rangeText() << " | " << p.doc << " |\n";
     }
   }
 }
@@ -40,8 +43,8 @@ int simCommand(const std::vector<std::string>& args) {
   opts.add_options()("scenario", po::value(&scenario), "scenario file (configs/scenarios/*.ini)")(
       "out,o", po::value(&out), "directory for sim.rawlog and truth.csv")(
       "seed", po::value(&seed)->default_value(-1), "random seed (-1: the scenario's own)")(
-      "keys", "list every scenario section and key with type, unit, default and meaning")(
-      "quiet,q", "no progress output");
+      "keys", "list every scenario section and key (markdown tables)")("quiet,q",
+                                                                       "no progress output");
   po::positional_options_description pos;
   pos.add("scenario", 1);
   po::variables_map vm;
@@ -51,6 +54,10 @@ int simCommand(const std::vector<std::string>& args) {
     return 0;
   }
   if (scenario.empty()) throw ConfigError("pedtrack sim: missing SCENARIO.ini");
+  if (seed < -1 || seed > 4294967295L)
+    throw ConfigError("--seed " + std::to_string(seed) +
+                      ": expected 0..4294967295 (-1: the "
+                      "scenario's own)");
   if (out.empty()) throw ConfigError("pedtrack sim: missing --out DIR");
 
   sim::Simulator simulator(sim::loadScenario(scenario, seed));
@@ -59,9 +66,12 @@ int simCommand(const std::vector<std::string>& args) {
   mrpt::io::CFileOutputStream file;
   if (!file.open(rawlog)) throw ConfigError("--out: cannot write '" + rawlog + "'");
   auto archive = mrpt::serialization::archiveFrom(file);
-  std::ofstream truth_out(truth);
-  if (!truth_out) throw ConfigError("--out: cannot write '" + truth + "'");
-  truth_out << sim::truthCsvHeader() << '\n';
+  std::unique_ptr<sim::TruthCsvWriter> truth_out;
+  try {
+    truth_out = std::make_unique<sim::TruthCsvWriter>(truth);
+  } catch (const DataError&) {
+    throw ConfigError("--out: cannot write '" + truth + "'");
+  }
 
   Progress progress("sim", !vm.count("quiet"));
   installStopHandlers();
@@ -70,7 +80,7 @@ int simCommand(const std::vector<std::string>& args) {
   sim::SimFrame f;
   while (!Pipeline::stopRequested() && simulator.next(f)) {
     for (const auto& o : f.observations) archive << *o;
-    sim::writeTruthRows(truth_out, f);
+    truth_out->write(f);
     for (const auto& r : f.truth) person_points += r.visible_points;
     ++frames;
     progress.update(frames, double(frames) / simulator.frameCount());

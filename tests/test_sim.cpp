@@ -397,7 +397,17 @@ TEST_CASE("the social-force crowd keeps people apart and away from objects", "[s
       }
     }
   }
-  CHECK(closest > 0.3);                                 // torsos never overlap
+  double from_objects = 1e9;
+  for (double t = 0; t <= sc.duration; t += 0.1)
+    for (const auto& p : sc.people) {
+      const MotionSample a = p.path.at(t);
+      for (const Primitive& o : sc.objects) {
+        if (o.shape != Shape::EllipticCylinder || o.z0 > 0.5) continue;  // poles, bins, trunks
+        from_objects = std::min(from_objects, std::hypot(a.x - o.a.x(), a.y - o.a.y()) - o.ru);
+      }
+    }
+  CHECK(closest > 0.35);                                // torso centres stay apart (README: 0.40 m)
+  CHECK(from_objects > 0.15);                           // nobody walks through a pole, bin or trunk
   CHECK(moved / sc.people.size() > 0.5 * sc.duration);  // and they do walk (m per person)
 }
 
@@ -434,4 +444,80 @@ TEST_CASE("legs swing at the gait's cadence and step length", "[sim]") {
   CHECK(amp == Approx(0.6 * (1 - u)).margin(0.01));
   gait("cadence = 1.6\n", rate, amp);
   CHECK(rate == Approx(1.6).margin(0.25));
+}
+
+TEST_CASE("motion respects facing_rate at corners and accel at speed changes", "[sim]") {
+  MotionLimits lim;
+  lim.speed = 1.2;
+  lim.accel = 0.5;
+  lim.facing_rate = 30 * kDeg;
+  // A 90° goto corner: the body turns at no more than facing_rate, and the walker slows down.
+  const auto corner = Trajectory::fromScript("goto 3 0; goto 3 3", 0, 0, 0, lim, "t");
+  double max_rate = 0, min_speed_mid = 1e9, max_accel = 0;
+  const auto& S = corner.samples();
+  for (std::size_t k = 1; k < S.size(); ++k) {
+    max_rate = std::max(max_rate,
+                        std::abs(mrpt::math::wrapToPi(S[k].yaw - S[k - 1].yaw)) / Trajectory::kDt);
+    if (std::hypot(S[k].x - 3, S[k].y) < 0.05)
+      min_speed_mid = std::min(min_speed_mid, std::hypot(S[k].vx, S[k].vy));
+  }
+  CHECK(max_rate <= 30 * kDeg * 1.001);
+  CHECK(min_speed_mid < 0.7);  // (1 + cos 90°) / 2 of 1.2 m/s
+  // speed 1.2 → 0.3 within one run: the deceleration stays within accel.
+  const auto slow = Trajectory::fromScript("walk 3; speed 0.3; walk 1", 0, 0, 0, lim, "t");
+  const auto& T = slow.samples();
+  for (std::size_t k = 2; k + 2 < T.size(); ++k) {
+    const double v0 = std::hypot(T[k - 2].vx, T[k - 2].vy),
+                 v1 = std::hypot(T[k + 2].vx, T[k + 2].vy);
+    max_accel = std::max(max_accel, std::abs(v1 - v0) / (4 * Trajectory::kDt));
+  }
+  CHECK(max_accel < 0.5 * 1.05);
+  CHECK(slow.at(slow.duration() + 1).x == Approx(4));
+}
+
+TEST_CASE("odometry error is a random walk of the documented size at any frame rate", "[sim]") {
+  // 10 m straight at 1 m/s with odometry_noise 0.1 m/√m: RMS position error 0.1·√10 = 0.32 m.
+  auto rms = [](int rate) {
+    double sum2 = 0;
+    const int runs = 60;
+    for (int seed = 1; seed <= runs; ++seed) {
+      Simulator s(scenarioFromText(
+          "[scenario]\nduration = 13\nseed = " + std::to_string(seed) +
+              "\n[sensor]\nmodel = custom2d\nfov = 90\nresolution = 10\nmax_range = 5\nrate = " +
+              std::to_string(rate) +
+              "\n[robot]\nscript = walk 10\nspeed = 1\nodometry_noise = 0.1\n",
+          "t.ini"));
+      SimFrame f;
+      while (s.next(f)) {
+      }
+      sum2 += std::pow(f.robot_odometry.x() - f.robot_true.x(), 2) +
+              std::pow(f.robot_odometry.y() - f.robot_true.y(), 2);
+    }
+    return std::sqrt(sum2 / runs);
+  };
+  const double at5 = rms(5), at40 = rms(40);
+  INFO(at5 << " " << at40);
+  CHECK(at5 == Approx(0.1 * std::sqrt(10.0)).epsilon(0.3));
+  CHECK(at40 == Approx(0.1 * std::sqrt(10.0)).epsilon(0.3));
+}
+
+TEST_CASE("truth is in the odometry frame, world positions alongside", "[sim]") {
+  // With drifting odometry, x,y is where the person is relative to the robot's belief.
+  Simulator s(scenarioFromText(
+      "[scenario]\nduration = 5\n[sensor]\nmodel = utm30lx\nz = 1.0\nrange_noise = 0\n"
+      "[robot]\nscript = walk 4\nspeed = 1\nodometry_noise = 0.2\nodometry_yaw_drift = 0.05\n"
+      "[person.a]\nx = 6\ny = 1\n",
+      "t.ini"));
+  SimFrame f;
+  while (s.next(f)) {
+  }
+  const TruthRow& r = f.truth.at(0);
+  CHECK(r.world_x == Approx(6));
+  CHECK(r.world_y == Approx(1));
+  double rx = 0, ry = 0, ox = 0, oy = 0, sz = 0;
+  f.robot_true.inverseComposePoint(6, 1, 0, rx, ry, sz);
+  f.robot_odometry.composePoint(rx, ry, 0, ox, oy, sz);
+  CHECK(r.x == Approx(ox).margin(1e-9));
+  CHECK(r.y == Approx(oy).margin(1e-9));
+  CHECK(std::hypot(r.x - 6, r.y - 1) > 1e-3);  // the odometry did drift
 }

@@ -1,15 +1,13 @@
 #include "pedtrack/velodyne_decode.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace pedtrack {
 namespace {
 
 using Velo = mrpt::obs::CObservationVelodyneScan;
-
-// VLP-16 firing timing (µs), as in the datasheet and MRPT's decoder.
-constexpr double kBlockUs = 110.592, kLaserUs = 2.304, kFiringUs = 55.296;
 
 }  // namespace
 
@@ -31,27 +29,34 @@ std::vector<VelodynePoint> decodeVelodyne(const Velo& scan) {
     const bool dual = pkt.laser_return_mode == Velo::RETMODE_DUAL;
     const int step = dual ? 2 : 1;
     // Median rotation between consecutive blocks, to interpolate within a block.
-    std::vector<int> diffs;
+    std::array<int, Velo::BLOCKS_PER_PACKET> diffs{};
+    int nd = 0;
     for (int b = 0; b + step < Velo::BLOCKS_PER_PACKET; ++b)
-      diffs.push_back(
+      diffs[nd++] =
           (Velo::ROTATION_MAX_UNITS + pkt.blocks[b + step].rotation() - pkt.blocks[b].rotation()) %
-          Velo::ROTATION_MAX_UNITS);
-    std::nth_element(diffs.begin(), diffs.begin() + diffs.size() / 2, diffs.end());
-    const int median = diffs[diffs.size() / 2];
+          Velo::ROTATION_MAX_UNITS;
+    std::nth_element(diffs.begin(), diffs.begin() + nd / 2, diffs.begin() + nd);
+    const int median = diffs[nd / 2];
     for (int b = 0; b < Velo::BLOCKS_PER_PACKET; ++b) {
       const auto& blk = pkt.blocks[b];
       if (blk.header() != Velo::UPPER_BANK) continue;
-      // Dual return: keep the strongest (odd blocks), skipping repeats of the last return.
-      if (dual && b % 2 == 0) continue;
+      // Dual return: blocks come in pairs (last, strongest) with one rotation; the pair's
+      // stronger return is kept (when the strongest is also the last, the second block holds
+      // the second-strongest instead).
+      if (dual && b % 2 == 1) continue;
       for (int k = 0; k < Velo::SCANS_PER_BLOCK; ++k) {
-        const uint16_t raw = blk.laser_returns[k].distance();
+        uint16_t raw = blk.laser_returns[k].distance();
+        if (dual) {
+          const auto& other = pkt.blocks[b + 1].laser_returns[k];
+          if (!raw || (other.distance() && other.intensity() > blk.laser_returns[k].intensity()))
+            raw = other.distance();
+        }
         if (!raw) continue;
         const int laser = k % 16, firing = k / 16;
         const auto& c = scan.calibration.laser_corrections[laser];
         const double dist = raw * Velo::DISTANCE_RESOLUTION + c.distanceCorrection;
         if (dist < min_r || dist > max_r) continue;
-        const double frac = (laser * kLaserUs + firing * kFiringUs) / kBlockUs;
-        const int units = (blk.rotation() + static_cast<int>(std::lround(median * frac))) %
+        const int units = (blk.rotation() + vlp16::azimuthOffset(laser, firing, median)) %
                           Velo::ROTATION_MAX_UNITS;
         // Velodyne azimuth is clockwise from the device's forward axis; MRPT's +y is left.
         const double az = units * 0.01 * M_PI / 180.0;

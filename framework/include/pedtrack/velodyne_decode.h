@@ -9,9 +9,22 @@
 #include <mrpt/math/TPoint3D.h>
 #include <mrpt/obs/CObservationVelodyneScan.h>
 
+#include <cmath>
 #include <vector>
 
 namespace pedtrack {
+
+/// VLP-16 firing timing (datasheet, and MRPT's decoder): a block of two firings of 16 lasers
+/// lasts 110.592 µs, lasers fire 2.304 µs apart, the second firing starts 55.296 µs in.
+namespace vlp16 {
+constexpr double kBlockUs = 110.592, kLaserUs = 2.304, kFiringUs = 55.296;
+/// Azimuth (0.01° units) by which `laser` of `firing` lags its block's rotation value when the
+/// head turns `block_units` per block. Encoder (simulator) and decoder share it.
+inline int azimuthOffset(int laser, int firing, int block_units) {
+  return static_cast<int>(
+      std::lround(block_units * (laser * kLaserUs + firing * kFiringUs) / kBlockUs));
+}
+}  // namespace vlp16
 
 struct VelodynePoint {
   float x, y, z;  ///< sensor frame (MRPT axes: x forward, y left), m

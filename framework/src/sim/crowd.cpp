@@ -1,5 +1,7 @@
 #include "pedtrack/sim/crowd.h"
 
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,10 +12,10 @@ namespace {
 // A, B: strength and range of the exponential repulsion; λ: people mind what is ahead of them
 // more than what is behind (anisotropy of Helbing & Molnár 1995).
 constexpr double kTau = 0.5, kA = 4.0, kB = 0.3, kLambda = 0.35;
-constexpr double kRobotRadius = 0.4, kGoalReached = 0.5, kFacingRate = 150 * M_PI / 180;
+constexpr double kRobotRadius = 0.4, kGoalReached = 0.5;
 
 double wrap(double a) {
-  return std::atan2(std::sin(a), std::cos(a));
+  return mrpt::math::wrapToPi(a);
 }
 
 struct State {
@@ -102,7 +104,7 @@ std::vector<Trajectory> simulateCrowd(const std::vector<CrowdAgent>& agents,
       s.y += s.vy * dt;
       // The body faces where it walks, turning at a bounded rate; standing, it keeps its facing.
       if (std::hypot(s.vx, s.vy) > 0.15) {
-        const double step = kFacingRate * dt;
+        const double step = area.facing_rate * dt;
         s.yaw = wrap(s.yaw + std::clamp(wrap(std::atan2(s.vy, s.vx) - s.yaw), -step, step));
       }
     }

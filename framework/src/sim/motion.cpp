@@ -1,5 +1,8 @@
 #include "pedtrack/sim/motion.h"
 
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -12,16 +15,17 @@ namespace pedtrack::sim {
 namespace {
 
 double wrap(double a) {
-  return std::atan2(std::sin(a), std::cos(a));
+  return mrpt::math::wrapToPi(a);
 }
 double deg(double d) {
-  return d * M_PI / 180.0;
+  return mrpt::DEG2RAD(d);
 }
 
 // A piece of motion before time-parameterisation: a translation along a densely sampled
 // polyline with a facing per point, or a stand (turning in place or still) of known duration.
 struct Piece {
   bool translate = false;
+  bool smooth = false;  // facing changes gradually along it (arcs, turns), not at its start
   std::vector<double> px, py, facing;  // translation: points (first is the start)
   double speed = 0;
   double yaw0 = 0, yaw1 = 0, duration = 0;  // stand
@@ -54,6 +58,7 @@ struct Builder {
     Piece p;
     p.translate = true;
     p.speed = lim.speed;
+    p.smooth = true;
     const double a0 = std::atan2(y - cy, x - cx);
     for (int i = 0; i <= n; ++i) {
       const double a = a0 + ang * i / n;
@@ -74,6 +79,7 @@ struct Builder {
   }
   void stand(double new_yaw, double duration) {
     Piece p;
+    p.smooth = true;
     p.yaw0 = yaw;
     p.yaw1 = new_yaw;
     p.duration = duration;
@@ -82,17 +88,18 @@ struct Builder {
   }
 };
 
-// Speeds along a polyline: accelerate from rest, cruise, brake to rest (forward/backward pass).
-std::vector<double> speedProfile(const Piece& p, double accel) {
-  const std::size_t n = p.px.size();
-  std::vector<double> v(n, p.speed);
+// Speeds along a polyline under per-point caps: accelerate from rest, brake to rest, never
+// faster than a cap or than `accel` allows (forward and backward passes).
+std::vector<double> speedProfile(const std::vector<double>& px, const std::vector<double>& py,
+                                 std::vector<double> v, double accel) {
+  const std::size_t n = px.size();
   v.front() = v.back() = 0;
   for (std::size_t i = 1; i < n; ++i) {
-    const double ds = std::hypot(p.px[i] - p.px[i - 1], p.py[i] - p.py[i - 1]);
+    const double ds = std::hypot(px[i] - px[i - 1], py[i] - py[i - 1]);
     v[i] = std::min(v[i], std::sqrt(v[i - 1] * v[i - 1] + 2 * accel * ds));
   }
   for (std::size_t i = n - 1; i-- > 0;) {
-    const double ds = std::hypot(p.px[i + 1] - p.px[i], p.py[i + 1] - p.py[i]);
+    const double ds = std::hypot(px[i + 1] - px[i], py[i + 1] - py[i]);
     v[i] = std::min(v[i], std::sqrt(v[i + 1] * v[i + 1] + 2 * accel * ds));
   }
   return v;
@@ -158,11 +165,14 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
     }
   }
 
-  // Time-parameterise: consecutive translations form one run without stopping in between.
+  // Time-parameterise: consecutive translations form one run without stopping in between;
+  // walkers slow down for corners between them ((1 + cos turn) / 2 of the speed, at least 10 %).
   struct Raw {
     double t, x, y, facing;
+    bool smooth;   // reached by a gradual facing change (arc, turn) rather than a corner
+    double v = 0;  // path speed at this point
   };
-  std::vector<Raw> raw{{0, x, y, yaw}};
+  std::vector<Raw> raw{{0, x, y, yaw, false, 0}};
   double t = 0;
   for (std::size_t i = 0; i < b.pieces.size();) {
     if (!b.pieces[i].translate) {
@@ -170,33 +180,35 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
       const int n = std::max(1, static_cast<int>(std::ceil(p.duration / kDt)));
       for (int k = 1; k <= n; ++k)
         raw.push_back({t + p.duration * k / n, raw.back().x, raw.back().y,
-                       p.yaw0 + (p.yaw1 - p.yaw0) * k / n});
+                       p.yaw0 + (p.yaw1 - p.yaw0) * k / n, true});
       t += p.duration;
       continue;
     }
-    Piece run;
-    run.translate = true;
-    run.px = {b.pieces[i].px.front()};
-    run.py = {b.pieces[i].py.front()};
-    run.facing = {b.pieces[i].facing.front()};
-    std::vector<double> caps{b.pieces[i].speed};
+    std::vector<double> px{b.pieces[i].px.front()}, py{b.pieces[i].py.front()},
+        facing{b.pieces[i].facing.front()}, caps{b.pieces[i].speed};
+    std::vector<bool> smooth{false};
     for (; i < b.pieces.size() && b.pieces[i].translate; ++i) {
       const Piece& p = b.pieces[i];
+      if (px.size() > 1 && p.px.size() > 1) {
+        const double a0 = std::atan2(py.back() - py[py.size() - 2], px.back() - px[px.size() - 2]);
+        const double a1 = std::atan2(p.py[1] - p.py[0], p.px[1] - p.px[0]);
+        const double slow = std::max(0.1, 0.5 * (1 + std::cos(wrap(a1 - a0))));
+        caps.back() = std::min(caps.back(), slow * std::min(caps.back(), p.speed));
+      }
       for (std::size_t k = 1; k < p.px.size(); ++k) {
-        run.px.push_back(p.px[k]);
-        run.py.push_back(p.py[k]);
-        run.facing.push_back(p.facing[k]);
+        px.push_back(p.px[k]);
+        py.push_back(p.py[k]);
+        facing.push_back(p.facing[k]);
         caps.push_back(p.speed);
+        smooth.push_back(p.smooth);
       }
     }
-    run.speed = *std::max_element(caps.begin(), caps.end());
-    std::vector<double> v = speedProfile(run, lim.accel);
-    for (std::size_t k = 0; k < v.size(); ++k) v[k] = std::min(v[k], caps[k]);
-    for (std::size_t k = 1; k < run.px.size(); ++k) {
-      const double ds = std::hypot(run.px[k] - run.px[k - 1], run.py[k] - run.py[k - 1]);
+    const std::vector<double> v = speedProfile(px, py, caps, lim.accel);
+    for (std::size_t k = 1; k < px.size(); ++k) {
+      const double ds = std::hypot(px[k] - px[k - 1], py[k] - py[k - 1]);
       const double vm = std::max(0.5 * (v[k] + v[k - 1]), 0.02);
       t += ds / vm;
-      raw.push_back({t, run.px[k], run.py[k], run.facing[k]});
+      raw.push_back({t, px[k], py[k], facing[k], smooth[k], v[k]});
     }
   }
 
@@ -212,12 +224,23 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
     s.t = tk;
     if (j + 1 < raw.size()) {
       const Raw &r0 = raw[j], &r1 = raw[j + 1];
-      const double u = r1.t > r0.t ? std::clamp((tk - r0.t) / (r1.t - r0.t), 0.0, 1.0) : 1.0;
-      s.x = r0.x + u * (r1.x - r0.x);
-      s.y = r0.y + u * (r1.y - r0.y);
+      const double dt = r1.t - r0.t, tau = std::clamp(tk - r0.t, 0.0, std::max(dt, 0.0));
+      const double u = dt > 0 ? tau / dt : 1.0;
+      // Along a path segment the speed changes uniformly from v0 to v1 (the profile's constant
+      // acceleration), so the distance covered grows quadratically, not linearly, with time.
+      double w = u;
+      if (dt > 0 && r0.v + r1.v > 1e-9)
+        w = std::clamp(
+            (r0.v * tau + 0.5 * (r1.v - r0.v) / dt * tau * tau) / (0.5 * (r0.v + r1.v) * dt), 0.0,
+            1.0);
+      s.x = r0.x + w * (r1.x - r0.x);
+      s.y = r0.y + w * (r1.y - r0.y);
       const double target = r0.facing + u * (r1.facing - r0.facing);
-      const double step = lim.facing_rate * kDt +
-                          std::abs(r1.facing - r0.facing) * kDt / std::max(r1.t - r0.t, kDt);
+      // Along arcs and turns the commanded facing itself moves smoothly: follow it; after a
+      // corner or a new walking direction it jumps: turn at facing_rate.
+      const double follow =
+          r1.smooth ? std::abs(r1.facing - r0.facing) * kDt / std::max(r1.t - r0.t, kDt) : 0.0;
+      const double step = lim.facing_rate * kDt + follow;
       facing += std::clamp(wrap(target - facing), -step, step);
     } else {
       s.x = raw.back().x;
@@ -309,7 +332,7 @@ std::string randomWalkScript(unsigned seed, int legs, double x0, double y0, doub
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> ux(x0, x1), uy(y0, y1), u01(0, 1);
   std::ostringstream os;
-  os.precision(4);
+  os.precision(10);
   for (int i = 0; i < legs; ++i) {
     if (i) os << "; ";
     const double r = u01(rng);

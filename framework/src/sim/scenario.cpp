@@ -95,6 +95,7 @@ std::string personScript(const ParamSet& p, unsigned long seed, int id) {
     if (v.empty() || v.size() % 2)
       throw ConfigError(p.where("waypoints") + ": expected pairs 'x y; x y; ...'");
     std::ostringstream os;
+    os.precision(10);
     for (std::size_t i = 0; i < v.size(); i += 2)
       os << (i ? "; " : "") << "goto " << v[i] << " " << v[i + 1];
     return os.str();
@@ -177,7 +178,7 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
     // Start clear of everyone and everything (a few hundred tries, then anywhere).
     for (int tries = 0; tries < 500; ++tries) {
       ag.x = in(a[0], a[2]);
-      ag.y = in(a[1], a[3]);
+      ag.y = in(a[1], a[3]);  // separate statements: a fixed order of draws
       bool clear = true;
       for (const auto& o : agents) clear = clear && std::hypot(o.x - ag.x, o.y - ag.y) > 0.9;
       for (const auto& o : obstacles)
@@ -188,7 +189,7 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
     if (!social) {
       MotionLimits lim;
       lim.speed = ag.speed;
-      lim.facing_rate = 150 * kDeg;
+      lim.facing_rate = cr.getDouble("facing_rate") * kDeg;
       const std::string script =
           randomWalkScript(static_cast<unsigned>(rng()), int(cr.getInt("legs")), a[0], a[1], a[2],
                            a[3], cr.getDouble("max_stop"));
@@ -198,7 +199,8 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
     people.push_back(std::move(ps));
   }
   if (social) {
-    const CrowdArea area{a[0], a[1], a[2], a[3], cr.getDouble("max_stop")};
+    const CrowdArea area{
+        a[0], a[1], a[2], a[3], cr.getDouble("max_stop"), cr.getDouble("facing_rate") * kDeg};
     auto paths = simulateCrowd(agents, obstacles, &s.robot.path, s.duration, area, rng);
     for (std::size_t i = 0; i < people.size(); ++i) people[i].path = std::move(paths[i]);
   }
@@ -280,19 +282,23 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
   s.sensor.dropout = se.getDouble("dropout");
   if (!se.getString("label").empty()) s.sensor.label = se.getString("label");
   s.sensor.sweep_motion = se.getBool("sweep_motion");
-  if (s.sensor.is3d && (se.getDouble("fov") > 0 || se.getDouble("resolution") > 0))
-    throw ConfigError(se.where("fov") +
-                      ": the VLP-16's geometry is fixed (fov/resolution are "
-                      "for 2D models)");
+  for (const char* k : {"fov", "resolution"})
+    if (s.sensor.is3d && se.getDouble(k) > 0)
+      throw ConfigError(se.where(k) + ": the VLP-16's geometry is fixed (for 2D models only)");
+  // The simulated VLP-16 turns at 10 Hz (1800 columns of 0.2°); other rates change its columns.
+  if (s.sensor.is3d && std::abs(s.sensor.rate - 10) > 1e-9)
+    throw ConfigError(se.where("rate") + ": the simulated VLP-16 runs at 10 Hz only");
   for (const char* k : {"fov", "resolution", "max_range", "rate"})
     if (s.sensor.model == "custom2d" && se.getDouble(k) <= 0)
       throw ConfigError(se.where(k) + ": required (> 0) for model custom2d");
   s.sensor.mount = mrpt::poses::CPose3D(se.getDouble("x"), se.getDouble("y"), se.getDouble("z"),
                                         se.getDouble("yaw") * kDeg, se.getDouble("pitch") * kDeg,
                                         se.getDouble("roll") * kDeg);
+  // Truth legs at a leg-height 2D scanner's plane; a torso-height one scans above the hips.
+  const bool leg_scanner = !s.sensor.is3d && se.getDouble("z") <= 0.7;
   s.leg_height = sc.getDouble("leg_height") >= 0 ? sc.getDouble("leg_height")
-                 : s.sensor.is3d                 ? 0.4
-                                                 : se.getDouble("z");
+                 : leg_scanner                   ? se.getDouble("z")
+                                                 : 0.4;
 
   const ParamSet& ro = section("robot");
   s.robot.path =
@@ -335,11 +341,16 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
     for (long i = 0; i < cl.getInt("count"); ++i) {
       const std::string& t =
           types[static_cast<std::size_t>(u01(rng) * types.size()) % types.size()];
-      const double x = a[0] + (a[2] - a[0]) * u01(rng), y = a[1] + (a[3] - a[1]) * u01(rng);
+      const double x = a[0] + (a[2] - a[0]) * u01(rng);
+      const double y = a[1] + (a[3] - a[1]) * u01(rng);
       const double yaw = u01(rng) * M_PI;
-      addObject(s, t, x, y, &cl, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw),
-                t == "pole" ? 0.04 + 0.06 * u01(rng) : 0, 0, yaw, 0.4 + 0.8 * u01(rng),
-                0.3 + 0.5 * u01(rng), 0.15, 1.0 + u01(rng));
+      // One draw per statement: the order of arguments' evaluation is unspecified.
+      const double radius = t == "pole" ? 0.04 + 0.06 * u01(rng) : 0;
+      const double width = 0.4 + 0.8 * u01(rng);
+      const double depth = 0.3 + 0.5 * u01(rng);
+      const double crown = 1.0 + u01(rng);
+      addObject(s, t, x, y, &cl, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw), radius, 0, yaw,
+                width, depth, 0.15, crown);
     }
   }
   if (single.count("crowd")) addCrowd(s, single.at("crowd"), rng);

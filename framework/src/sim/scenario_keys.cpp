@@ -47,8 +47,9 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys(
            P::real("duration", std::nullopt, "s", 0.01, 36000, "simulated time"),
            P::integer("seed", 1, "", 0, 4294967295.0, "random seed (noise, crowd, clutter)"),
            P::real("start_time", 1700000000.0, "s", 0, 4e9, "UNIX time of the first frame"),
-           P::real("leg_height", -1, "m", -1, 2,
-                   "height of truth leg positions (-1: a 2D sensor's height, else 0.4 m)"),
+           P::real(
+               "leg_height", -1, "m", -1, 2,
+               "height of truth leg positions (-1: a 2D sensor's height up to 0.7 m, else 0.4 m)"),
        }},
       {"sensor",
        {
@@ -76,9 +77,12 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys(
             P::real("y", 0, "m", -kInf, kInf, "start position"),
             P::real("yaw", 0, "deg", -360, 360, "start heading"),
             P::text("script", std::string(""), "motion script (empty: the robot stands still)"),
-            P::real("odometry_noise", 0, "m/m", 0, 1, "1σ odometry error per metre travelled"),
-            P::real("odometry_yaw_noise", 0, "rad/rad", 0, 1, "1σ heading error per radian turned"),
-            P::real("odometry_yaw_drift", 0, "rad/m", 0, 1, "1σ heading error per metre")},
+            P::real("odometry_noise", 0, "m/√m", 0, 1,
+                    "odometry position random walk: 1σ error after 1 m travelled"),
+            P::real("odometry_yaw_noise", 0, "rad/√rad", 0, 1,
+                    "heading random walk: 1σ error after 1 rad turned"),
+            P::real("odometry_yaw_drift", 0, "rad/√m", 0, 1,
+                    "heading random walk: 1σ error after 1 m travelled")},
            motionKeys(0.6, 45))},
       {"ground",
        {
@@ -114,6 +118,8 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys(
            P::real("speed_max", 1.5, "m/s", 0.05, 5, "fastest walking speed"),
            P::integer("legs", 30, "", 1, 10000, "random walk commands per person (scripted)"),
            P::real("max_stop", 3, "s", 0, 100, "longest random stop"),
+           P::real("facing_rate", 150, "deg/s", 1, 2000,
+                   "how fast bodies turn to a new walking direction"),
        }},
       {"object.NAME",
        {

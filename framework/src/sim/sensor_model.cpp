@@ -10,6 +10,7 @@
 
 #include "pedtrack/errors.h"
 #include "pedtrack/sim/geometry.h"
+#include "pedtrack/velodyne_decode.h"
 
 namespace pedtrack::sim {
 namespace {
@@ -17,22 +18,13 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 using Velo = mrpt::obs::CObservationVelodyneScan;
 
-// VLP-16 timing (datasheet): a firing block (two firings of 16 lasers) lasts 110.592 µs, lasers
-// fire 2.304 µs apart, the second firing starts 55.296 µs into the block. MRPT's decoder
-// interpolates the azimuth of each return from these, so the simulated rays do the same.
-constexpr double kBlockUs = 110.592, kLaserUs = 2.304, kFiringUs = 55.296;
-constexpr int kBlockUnits = 40;  // 0.4° per block (0.2° per firing) at 10 Hz, in 0.01° units
-constexpr int kColumns = 1800;   // 0.2° columns over 360°
+// The simulated VLP-16 turns at 10 Hz: 0.4° per firing block (0.2° per firing), in 0.01° units.
+constexpr int kBlockUnits = 40;
+constexpr int kColumns = 1800;  // 0.2° columns over 360°
 
 const mrpt::obs::VelodyneCalibration& vlp16Calibration() {
   static const auto calib = mrpt::obs::VelodyneCalibration::LoadDefaultCalibration("VLP16");
   return calib;
-}
-
-// Azimuth offset (0.01° units) of laser `laser` in firing `firing`, as MRPT's decoder computes.
-int velodyneAzimuthAdjust(int laser, int firing) {
-  return static_cast<int>(
-      std::lround(kBlockUnits * (laser * kLaserUs + firing * kFiringUs) / kBlockUs));
 }
 
 // Velodyne azimuth (clockwise from the device's forward axis, 0.01° units) to the MRPT sensor
@@ -111,7 +103,7 @@ RayTable::RayTable(const SensorSpec& spec) {
       const auto& lc = calib.laser_corrections[l];
       elev_.push_back(lc.verticalCorrection * kDeg);
       for (int c = 0; c < cols_; ++c) {
-        const int units = (c / 2) * kBlockUnits + velodyneAzimuthAdjust(l, c % 2);
+        const int units = (c / 2) * kBlockUnits + vlp16::azimuthOffset(l, c % 2, kBlockUnits);
         const double a = velodyneToMrptAngle(units);
         dir_[l * cols_ + c] = {lc.cosVertCorrection * std::cos(a),
                                lc.cosVertCorrection * std::sin(a), lc.sinVertCorrection};
@@ -263,7 +255,8 @@ mrpt::obs::CObservation::Ptr ObservationMaker::makeVelodyne(const RangeImage& im
         out += 3;
       }
     }
-    const uint32_t us = static_cast<uint32_t>(std::fmod(us0 + p * per_packet * kBlockUs, 3600e6));
+    const uint32_t us =
+        static_cast<uint32_t>(std::fmod(us0 + p * per_packet * vlp16::kBlockUs, 3600e6));
     std::memcpy(out, &us, 4);
     out[4] = Velo::RETMODE_STRONGEST;
     out[5] = 0x22;  // VLP-16

@@ -1,17 +1,16 @@
 #include "pedtrack/sim/simulator.h"
 
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "pedtrack/sim/raycast.h"
-
 namespace pedtrack::sim {
 
 Simulator::Simulator(Scenario scenario)
-    : s_(std::move(scenario)), rays_(s_.sensor), maker_(s_.sensor), rng_(s_.seed) {
+    : s_(std::move(scenario)), rays_(s_.sensor), caster_(rays_), maker_(s_.sensor), rng_(s_.seed) {
   frames_ = static_cast<std::size_t>(std::floor(s_.duration * s_.sensor.rate + 1e-9));
   gaits_.resize(s_.people.size());
 }
@@ -31,21 +30,31 @@ bool Simulator::next(SimFrame& f) {
   } else {
     const mrpt::poses::CPose2D a(last_true_), b(f.robot_true);
     const mrpt::poses::CPose2D d = b - a;
-    const double dist = std::hypot(d.x(), d.y());
+    // Odometry errors are random walks: their variance grows with the distance travelled and
+    // the angle turned, whatever the frame rate.
+    const double dist = std::hypot(d.x(), d.y()), turn = std::abs(d.phi());
     std::normal_distribution<double> n01(0, 1);
     const double ex = n01(rng_), ey = n01(rng_), eyaw = n01(rng_);
-    const mrpt::poses::CPose2D noisy(
-        d.x() + ex * s_.robot.odometry_noise * dist, d.y() + ey * s_.robot.odometry_noise * dist,
-        d.phi() + eyaw * (s_.robot.odometry_yaw_noise * std::abs(d.phi()) +
-                          s_.robot.odometry_yaw_drift * dist));
+    const double s_xy = s_.robot.odometry_noise * std::sqrt(dist / 2);  // per axis
+    const double s_yaw = std::sqrt(std::pow(s_.robot.odometry_yaw_noise, 2) * turn +
+                                   std::pow(s_.robot.odometry_yaw_drift, 2) * dist);
+    const mrpt::poses::CPose2D noisy(d.x() + ex * s_xy, d.y() + ey * s_xy, d.phi() + eyaw * s_yaw);
     odometry_ = odometry_ + mrpt::poses::CPose3D(noisy);
   }
   last_true_ = f.robot_true;
   f.robot_odometry = odometry_;
   f.sensor_true = f.robot_true + s_.sensor.mount;
 
-  // Scene: static objects plus every person present, posed at this instant.
-  std::vector<Primitive> scene = s_.objects;
+  // Scene: the static objects plus every person present, posed at this instant. Truth goes to
+  // the odometry frame through the robot: what a perfect tracker on this odometry reports.
+  const mrpt::poses::CPose2D robot2d(f.robot_true), odom2d(f.robot_odometry);
+  const double dyaw = odom2d.phi() - robot2d.phi();
+  auto toOdometry = [&](double wx, double wy, double& ox, double& oy) {
+    double rx = 0, ry = 0;
+    robot2d.inverseComposePoint(wx, wy, rx, ry);
+    odom2d.composePoint(rx, ry, ox, oy);
+  };
+  people_.clear();
   std::vector<TruthRow> rows;
   for (std::size_t i = 0; i < s_.people.size(); ++i) {
     const PersonSpec& p = s_.people[i];
@@ -63,29 +72,28 @@ bool Simulator::next(SimFrame& f) {
     }
     const double gz = s_.ground.height(seen.x, seen.y);
     BodyPose pose = poseBody(p.body, seen, gaits_[i], gz, s_.leg_height, p.id);
-    scene.insert(scene.end(), pose.parts.begin(), pose.parts.end());
+    people_.insert(people_.end(), pose.parts.begin(), pose.parts.end());
     if (s_.sensor.sweep_motion)  // truth legs at the stamp
       pose = poseBody(p.body, ms, gaits_[i], s_.ground.height(ms.x, ms.y), s_.leg_height, p.id);
     TruthRow r;
     r.id = p.id;
-    r.x = ms.x;
-    r.y = ms.y;
+    r.world_x = ms.x;
+    r.world_y = ms.y;
+    toOdometry(ms.x, ms.y, r.x, r.y);
     double sz = 0;
     f.sensor_true.inverseComposePoint(ms.x, ms.y, f.sensor_true.z(), r.sensor_x, r.sensor_y, sz);
-    r.yaw = ms.yaw;
-    r.vx = ms.vx;
-    r.vy = ms.vy;
+    r.yaw = mrpt::math::wrapToPi(ms.yaw + dyaw);
+    r.vx = std::cos(dyaw) * ms.vx - std::sin(dyaw) * ms.vy;
+    r.vy = std::sin(dyaw) * ms.vx + std::cos(dyaw) * ms.vy;
     r.alpha = p.body.alpha;
     r.beta = p.body.beta;
     r.height = p.body.height;
-    r.left_leg_x = pose.left_leg.x();
-    r.left_leg_y = pose.left_leg.y();
-    r.right_leg_x = pose.right_leg.x();
-    r.right_leg_y = pose.right_leg.y();
+    toOdometry(pose.left_leg.x(), pose.left_leg.y(), r.left_leg_x, r.left_leg_y);
+    toOdometry(pose.right_leg.x(), pose.right_leg.y(), r.right_leg_x, r.right_leg_y);
     rows.push_back(r);
   }
 
-  castScan(rays_, f.sensor_true, scene, s_.ground, s_.sensor.max_range, image_);
+  caster_.cast(f.sensor_true, {&s_.objects, &people_}, s_.ground, s_.sensor.max_range, image_);
   std::vector<int> counts(s_.people.size() + 1, 0);
   auto odo = mrpt::obs::CObservationOdometry::Create();
   odo->sensorLabel = "ODOMETRY";
@@ -94,27 +102,29 @@ bool Simulator::next(SimFrame& f) {
   f.observations.push_back(odo);
   f.observations.push_back(maker_.make(image_, f.t, rng_, counts));
   for (auto& r : rows) r.visible_points = counts[r.id];
-  f.static_points = counts[0];
   f.truth = std::move(rows);
   ++k_;
   return true;
 }
 
-const char* truthCsvHeader() {
+const char* TruthCsvWriter::header() {
   return "t,frame,id,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,height,visible_points,"
-         "left_leg_x,left_leg_y,right_leg_x,right_leg_y";
+         "left_leg_x,left_leg_y,right_leg_x,right_leg_y,world_x,world_y";
 }
 
-void writeTruthRows(std::ostream& out, const SimFrame& f) {
+void TruthCsvWriter::write(const SimFrame& f) {
   char buf[512];
   for (const TruthRow& r : f.truth) {
     const int n = std::snprintf(
         buf, sizeof buf,
-        "%.6f,%zu,%d,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.3f,%d,%.4f,%.4f,%.4f,%.4f\n",
+        "%.6f,%zu,%d,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,%.3f,%d,%.4f,%.4f,%.4f,%.4f,"
+        "%.4f,%.4f\n",
         f.t, f.index, r.id, r.x, r.y, r.sensor_x, r.sensor_y, r.yaw, r.vx, r.vy, r.alpha, r.beta,
-        r.height, r.visible_points, r.left_leg_x, r.left_leg_y, r.right_leg_x, r.right_leg_y);
-    out.write(buf, n);
+        r.height, r.visible_points, r.left_leg_x, r.left_leg_y, r.right_leg_x, r.right_leg_y,
+        r.world_x, r.world_y);
+    out_.write(buf, n);
   }
+  frameWritten();
 }
 
 }  // namespace pedtrack::sim

@@ -1,7 +1,6 @@
 // `sim` sensor: runs a simulation scenario (configs/scenarios/*.ini) live, frame by frame, so a
 // pipeline sees exactly what `pedtrack sim` would write to a rawlog — without the file.
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
 #include "pedtrack/errors.h"
@@ -28,9 +27,11 @@ class SimSource : public Sensor {
     std::error_code ec;
     if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty())
       std::filesystem::create_directories(dir, ec);
-    truth_.open(path);
-    if (!truth_) throw ConfigError(where_ + ": cannot write '" + path + "'");
-    truth_ << sim::truthCsvHeader() << '\n';
+    try {
+      truth_ = std::make_unique<sim::TruthCsvWriter>(path);
+    } catch (const DataError&) {
+      throw ConfigError(where_ + ": cannot write '" + path + "'");
+    }
   }
 
   bool next(Frame& frame) override {
@@ -41,10 +42,7 @@ class SimSource : public Sensor {
     // The scan (the odometry observation's content is the robot pose itself).
     frame.observations.push_back(f.observations.back());
     frame.sensor_pose = f.robot_odometry + sim_.scenario().sensor.mount;
-    if (truth_.is_open()) {
-      sim::writeTruthRows(truth_, f);
-      truth_.flush();
-    }
+    if (truth_) truth_->write(f);
     done_ = f.index + 1;
     if (realtime_) pacer_.wait(frame.t);
     return true;
@@ -58,7 +56,7 @@ class SimSource : public Sensor {
   sim::Simulator sim_;
   bool realtime_;
   std::string truth_key_, where_;
-  std::ofstream truth_;
+  std::unique_ptr<sim::TruthCsvWriter> truth_;
   std::size_t done_ = 0;
   ReplayPacer pacer_;
 };

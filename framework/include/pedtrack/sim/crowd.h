@@ -19,9 +19,11 @@ struct CircleObstacle {
   double x = 0, y = 0, r = 0;
 };
 
+/// Where and how the crowd walks.
 struct CrowdArea {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< box goals are drawn from
   double max_stop = 0;                    ///< longest pause at a goal (s)
+  double facing_rate = 2.6;               ///< rad/s, how fast bodies turn to the walking direction
 };
 
 /// Trajectories of `agents` over `duration` s. `robot` (may be null) is avoided like a person of

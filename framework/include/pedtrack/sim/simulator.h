@@ -4,10 +4,11 @@
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/poses/CPose3D.h>
 
-#include <ostream>
 #include <random>
 #include <vector>
 
+#include "pedtrack/outputs.h"
+#include "pedtrack/sim/raycast.h"
 #include "pedtrack/sim/scenario.h"
 
 namespace pedtrack::sim {
@@ -15,13 +16,16 @@ namespace pedtrack::sim {
 /// One person at one frame (truth.csv row).
 struct TruthRow {
   int id = 0;
-  double x = 0, y = 0;                ///< torso centre, m, world (= odometry) frame
+  /// Torso centre (m) in the odometry frame: the fixed frame a pipeline tracks in, which is the
+  /// world frame when odometry is exact and drifts from it with odometry noise.
+  double x = 0, y = 0;
+  double world_x = 0, world_y = 0;    ///< torso centre in the world frame
   double sensor_x = 0, sensor_y = 0;  ///< torso centre in the true sensor frame
-  double yaw = 0;                     ///< facing, rad
-  double vx = 0, vy = 0;              ///< m/s
+  double yaw = 0;                     ///< facing, rad, odometry frame
+  double vx = 0, vy = 0;              ///< m/s, odometry frame
   double alpha = 0, beta = 0, height = 0;
   int visible_points = 0;  ///< returns the scan produced on this person
-  double left_leg_x = 0, left_leg_y = 0, right_leg_x = 0, right_leg_y = 0;
+  double left_leg_x = 0, left_leg_y = 0, right_leg_x = 0, right_leg_y = 0;  ///< odometry frame
 };
 
 struct SimFrame {
@@ -30,7 +34,6 @@ struct SimFrame {
   mrpt::poses::CPose3D robot_true, robot_odometry, sensor_true;
   std::vector<mrpt::obs::CObservation::Ptr> observations;  ///< CObservationOdometry, then scan
   std::vector<TruthRow> truth;
-  int static_points = 0, ground_points = 0;
 };
 
 class Simulator {
@@ -44,17 +47,23 @@ class Simulator {
  private:
   Scenario s_;
   RayTable rays_;
+  RayCaster caster_;
   ObservationMaker maker_;
   std::size_t frames_ = 0, k_ = 0;
   std::mt19937_64 rng_;
   std::vector<GaitClock> gaits_;
   mrpt::poses::CPose3D odometry_, last_true_;
   RangeImage image_;
+  std::vector<Primitive> people_;  // this frame's posed bodies, reused
 };
 
-/// truth.csv: `t,frame,id,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,height,visible_points,
-/// left_leg_x,left_leg_y,right_leg_x,right_leg_y`.
-const char* truthCsvHeader();
-void writeTruthRows(std::ostream& out, const SimFrame& f);
+/// Streams truth.csv: `t,frame,id,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,height,
+/// visible_points,left_leg_x,left_leg_y,right_leg_x,right_leg_y,world_x,world_y`.
+class TruthCsvWriter : public CsvStream {
+ public:
+  explicit TruthCsvWriter(const std::string& path) : CsvStream(path, header()) {}
+  void write(const SimFrame& f);
+  static const char* header();
+};
 
 }  // namespace pedtrack::sim
