@@ -57,6 +57,8 @@ void validate(const EvalArgs& a, const po::variables_map& vm) {
     check(!a.has_following, "--following applies to --tracks only");
     check(!a.legs || a.frame == "fixed",
           "--legs: truth.csv has leg positions in the fixed frame only");
+    check(!isBag(a.truth[0]) || vm["frame"].defaulted() || a.frame == "sensor",
+          "--frame fixed: a bag's leg labels are in the laser frame (sensor_x, sensor_y)");
   }
 }
 

@@ -71,7 +71,7 @@ void validate(RenderArgs& a) {
   if (a.size < 100 || a.size > 8000)
     bad("--size " + std::to_string(a.size) + ": expected 100..8000 px");
   if (a.range < 0 || !std::isfinite(a.range)) bad("--range: must be > 0 m (0: fit the data)");
-  if (a.fps < 0 || a.fps > 240) bad("--fps: expected 1..240 (0: the data rate)");
+  if (a.fps != 0 && (a.fps < 1 || a.fps > 240)) bad("--fps: expected 1..240 (0: the data rate)");
   if (a.trail < 0) bad("--trail: must be >= 0 s");
   if (a.max_frames == 0) bad("--max-frames 0: nothing to render");
   requireFile("rawlog", a.rawlog);

@@ -4,6 +4,8 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "pedtrack/outputs.h"
+
 namespace pedtrack::cli {
 namespace {
 
@@ -30,7 +32,9 @@ class Json {
     return raw(key, std::isfinite(v) ? format("%.10g", v) : std::string("null"));
   }
   Json& count(const char* key, std::size_t v) { return raw(key, std::to_string(v)); }
-  Json& text(const char* key, const std::string& v) { return raw(key, "\"" + v + "\""); }
+  Json& text(const char* key, const std::string& v) {
+    return raw(key, "\"" + jsonEscape(v) + "\"");
+  }
   Json& raw(const char* key, const std::string& v) {
     out_ += (first_ ? "" : sep_) + std::string("\"") + key + "\": " + v;
     first_ = false;

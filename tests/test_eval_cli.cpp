@@ -166,6 +166,12 @@ TEST_CASE("eval rejects bad input with one line and exit 2", "[eval_cli]") {
   std::string bad = tracksCsv(0.1);
   bad.replace(bad.find("\n100.000000,0,7,0.1000") + 16, 6, "abc");
   writeFile(dir + "/bad.csv", bad);
+  std::string nan_id = tracksCsv(0.1);
+  nan_id.replace(nan_id.find("\n100.000000,0,7,") + 14, 1, "nan");
+  writeFile(dir + "/nan.csv", nan_id);
+  std::string short_row = tracksCsv(0.1);
+  short_row.replace(short_row.find(",confirmed,2\n"), 12, "");
+  writeFile(dir + "/short.csv", short_row);
   const std::string truth = dir + "/truth.csv";
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--truth", dir + "/missing.csv", "--tracks", dir + "/tracks.csv"},
@@ -180,6 +186,10 @@ TEST_CASE("eval rejects bad input with one line and exit 2", "[eval_cli]") {
       {{"--truth", truth},
        "error: pedtrack eval: give either --tracks or --detections (see "
        "`pedtrack eval --help`)"},
+      {{"--truth", truth, "--tracks", dir + "/nan.csv"},
+       "error: " + dir + "/nan.csv:2: column 'track': 'nan' is not finite"},
+      {{"--truth", truth, "--tracks", dir + "/short.csv"},
+       "error: " + dir + "/short.csv:2: expected 19 columns, found 17"},
   };
   for (const auto& [args, expected] : cases) {
     std::vector<std::string> all = {"eval"};

@@ -299,6 +299,13 @@ TEST_CASE("the sim plugin drives a pipeline and writes the truth", "[sim][cli]")
                                    "/configs/scenarios/p4_crossing.ini\n");
   REQUIRE(runHost({"run", dir + "/auto.ini", "--out", dir + "/auto"}).exit_code == 0);
   CHECK(readFile(dir + "/auto/truth.csv") == readFile(dir + "/sim/truth.csv"));
+  // A truth path that cannot be written stops the run before anything is written.
+  const auto bad = runHost({"run", dir + "/auto.ini", "--set", "source.truth=/proc/no/truth.csv",
+                            "--out", dir + "/bad"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output ==
+        "error: " + dir + "/auto.ini: [source] truth: cannot write '/proc/no/truth.csv'\n");
+  CHECK_FALSE(std::filesystem::exists(dir + "/bad"));
   // The P4 crossing hides the far person for about 1 s: 5 frames at 5 Hz with no return.
   int hidden = 0;
   for (const auto& row : readObjectTable(dir + "/truth.csv").rows)

@@ -70,16 +70,18 @@ ObjectTable readTable(const std::string& path, bool id_required) {
       const double v = std::strtod(f[c].c_str(), &end);
       if (end == f[c].c_str() || *end != '\0')
         throw ConfigError(where(c) + ": '" + f[c] + "' is not a number");
+      if (!std::isfinite(v)) throw ConfigError(where(c) + ": '" + f[c] + "' is not finite");
       out = v;
     };
     auto integer = [&](int c, long& out, bool required) {
       double v = kNaN;
       real(c, v, required);
       if (std::isnan(v)) return;
-      if (v != std::floor(v)) throw ConfigError(where(c) + ": '" + f[c] + "' is not an integer");
+      if (v != std::floor(v) || std::abs(v) > 9e15)
+        throw ConfigError(where(c) + ": '" + f[c] + "' is not an integer");
       out = static_cast<long>(v);
     };
-    if (f.size() < table.columns.size() && f.size() < 3)
+    if (f.size() != table.columns.size())
       throw ConfigError(path + ":" + std::to_string(line_no) + ": expected " +
                         std::to_string(table.columns.size()) + " columns, found " +
                         std::to_string(f.size()));

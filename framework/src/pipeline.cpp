@@ -25,7 +25,7 @@ std::unique_ptr<Plugin> create(const PipelineConfig& cfg, const StageConfig& sc)
   } catch (const ConfigError& e) {
     // Plugins name the key; the section and file are added here once for all of them.
     const std::string what = e.what();
-    if (what.rfind(cfg.file, 0) == 0) throw;
+    if (what.rfind(cfg.file, 0) == 0) throw ConfigError(what);  // a framework-made copy
     throw ConfigError(cfg.file + ": [" + sc.section + "] " + what);
   } catch (const std::exception& e) {
     throw ConfigError(cfg.file + ": [" + sc.section + "] " + sc.descriptor->name + ": " + e.what());
@@ -69,14 +69,22 @@ RunSummary Pipeline::run(const RunOptions& opt) {
 
   std::unique_ptr<TracksCsvWriter> csv;
   std::unique_ptr<DetectionsCsvWriter> detections_csv;  // created on the first detection
+  // Plugins start first: one that rejects the output directory (exit 2) leaves nothing behind.
+  const bool created = !opt.out_dir.empty() && std::filesystem::create_directories(opt.out_dir);
+  try {
+    source_->start(opt.out_dir);
+    for (auto& s : stages_) s->start(opt.out_dir);
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    if (created && std::filesystem::is_empty(opt.out_dir, ec)) std::filesystem::remove(opt.out_dir);
+    if (dynamic_cast<const ConfigError*>(&e)) throw ConfigError(e.what());
+    throw DataError(e.what());
+  }
   if (!opt.out_dir.empty()) {
-    std::filesystem::create_directories(opt.out_dir);
     csv = std::make_unique<TracksCsvWriter>(opt.out_dir + "/tracks.csv");
     // A stale detections.csv of an earlier run would be read as this run's.
     std::filesystem::remove(opt.out_dir + "/detections.csv");
   }
-  source_->start(opt.out_dir);
-  for (auto& s : stages_) s->start(opt.out_dir);
   Progress progress("run", opt.progress);
   const auto start = Clock::now();
   std::size_t warnings = 0;

@@ -38,7 +38,6 @@ struct StreamSummary {
   std::size_t frames = 0;
   double t_first = 0, t_last = 0;
   std::vector<cv::Point2d> sensor_path;  ///< sensor position (fixed frame) of every frame
-  std::vector<double> sensor_yaw;
   /// Frames per second from the timestamps, clamped to [1, 60]; 10 when unknown.
   double rate() const;
 };

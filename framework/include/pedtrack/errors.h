@@ -1,4 +1,9 @@
 #pragma once
+// The two exceptions every part of pedtrack throws. Their vtables and type information live in
+// the framework library only (out-of-line destructors, default visibility), so an exception a
+// plugin throws stays valid after the plugin's library is unloaded, and is caught by type in
+// the host.
+#include <boost/config.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -6,15 +11,17 @@ namespace pedtrack {
 
 /// Bad input the user can fix (pipeline file, command line, missing file): exit code 2.
 /// The message is one line that names the file, section, key or value at fault.
-class ConfigError : public std::runtime_error {
+class BOOST_SYMBOL_VISIBLE ConfigError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  ~ConfigError() override;
 };
 
 /// A failure while running on valid configuration (corrupt data, device error): exit code 1.
-class DataError : public std::runtime_error {
+class BOOST_SYMBOL_VISIBLE DataError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  ~DataError() override;
 };
 
 namespace exit_code {

@@ -28,7 +28,9 @@ std::vector<TimedObjects> objectsByTime(const ObjectTable& table, CoordFrame fra
       o.y = sensor ? r->sensor_y : r->y;
       if (!std::isfinite(o.x) || !std::isfinite(o.y))
         throw ConfigError(table.path + ": row at t=" + std::to_string(r->t) + ", id " +
-                          std::to_string(r->id) + ": sensor_x/sensor_y empty (--frame sensor)");
+                          std::to_string(r->id) +
+                          (sensor ? ": sensor_x/sensor_y empty or not finite (--frame sensor)"
+                                  : ": x/y not finite"));
       o.scored = isScored(*r, min_visible);
       o.row = r;
       to.objects.push_back(o);
