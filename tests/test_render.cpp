@@ -282,3 +282,41 @@ TEST_CASE("the simulated crowd renders to a PNG and the C-path to an MP4", "[ren
   CHECK(std::abs(frames - 140) <= 1);
   CHECK(width == 600);
 }
+
+TEST_CASE("torso ellipses put alpha across the heading and beta along it", "[render]") {
+  // An empty simulated room (a 2D scan that hits nothing) and one true torso at (3, 0) facing +x
+  // with alpha 1.0 m and beta 0.3 m: the outline passes (3, ±1.0) and (3 ± 0.3, 0), not (4, 0).
+  const std::string dir = freshDir("render_axes");
+  writeFile(dir + "/s.ini",
+            "[scenario]\nduration = 0.1\n[sensor]\nmodel = utm30lx\nz = 1.0\nyaw = 180\n");
+  REQUIRE(runHost({"sim", dir + "/s.ini", "--out", dir, "-q"}).exit_code == 0);
+  const auto rows = lines(readFile(dir + "/truth.csv"));
+  REQUIRE(rows.size() == 1);  // nobody in the scenario: header only
+  const double t = 1700000000.0;
+  writeFile(dir + "/truth.csv", rows[0] + "\n" + fmt("%.6f,0,1,3,0,3,0,", t) +
+                                    "0,0,0,1.0,0.3,1.7,0,3,0.1,3,-0.1,3,0\n");
+  const std::string out = dir + "/axes.png";
+  REQUIRE(
+      runHost({"render", "--rawlog", dir + "/sim.rawlog", "--truth", dir + "/truth.csv", "--frame",
+               "0", "--out", out, "--size", "400", "--range", "5", "--center", "0,0", "-q"})
+          .exit_code == 0);
+  const cv::Mat img = cv::imread(out);
+  REQUIRE(img.cols == 400);
+  View v;
+  v.cx = 0, v.cy = 0, v.half_range = 5, v.size = 400;
+  // Outlines are anti-aliased: count pixels that are mostly truth-green near the point.
+  auto truthNear = [&](double x, double y) {
+    const cv::Point p = v.pixel(x, y);
+    int n = 0;
+    for (int dv = -2; dv <= 2; ++dv)
+      for (int du = -2; du <= 2; ++du) {
+        const cv::Vec3b c = img.at<cv::Vec3b>(p.y + dv, p.x + du);
+        n += c[1] > 120 && c[1] > c[0] + 50 && c[1] > c[2] + 50;
+      }
+    return n;
+  };
+  CHECK(truthNear(3, 1.0) > 0);
+  CHECK(truthNear(3, -1.0) > 0);
+  CHECK(truthNear(3.3, 0) > 0);
+  CHECK(truthNear(4.0, 0) == 0);
+}

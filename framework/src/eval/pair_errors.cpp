@@ -1,5 +1,7 @@
 #include "pedtrack/eval/pair_errors.h"
 
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,8 +19,7 @@ bool finite2(double a, double b) {
 }  // namespace
 
 double wrapAngle(double a) {
-  a = std::remainder(a, 2 * M_PI);  // [−π, π]
-  return a <= -M_PI ? a + 2 * M_PI : a;
+  return mrpt::math::wrapToPi(a);  // ]−π, π]
 }
 
 double PairErrors::rmse() const {
