@@ -21,7 +21,7 @@ const char* kUsage =
     "  plugins [NAME]     list plugins, or show every parameter of one\n"
     "  import INPUT       convert a ROS1 bag or rawlog to a rawlog (--topic selects topics)\n"
     "  sim SCENARIO.ini   simulate a scene into a rawlog plus truth.csv\n"
-    "  bench              measure replay throughput (Release build)\n"
+    "  bench              measure replay or simulation throughput (Release build)\n"
     "  eval               score tracks (MOTA, IDF1, HOTA, NEES) or detections vs truth\n"
     "  render             draw a run's tracks over its rawlog: a PNG or an MP4 video\n"
     "\n"
