@@ -88,6 +88,7 @@ int simCommand(const std::vector<std::string>& args) {
   progress.done(frames);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto& sc = simulator.scenario();
+  if (!sc.description.empty()) std::printf("%s: %s\n", sc.name.c_str(), sc.description.c_str());
   std::printf(
       "%s: %zu frames of %s at %.0f Hz, %zu people, %zu person returns; %.2f s (%.0f frames/s)\n"
       "wrote %s and %s\n",

@@ -1,22 +1,15 @@
 #include "eval_report.h"
 
+#include <mrpt/core/format.h>
+
 #include <cmath>
-#include <cstdarg>
-#include <cstdio>
 
 #include "pedtrack/outputs.h"
 
 namespace pedtrack::cli {
 namespace {
 
-std::string format(const char* fmt, ...) {
-  char buf[512];
-  va_list ap;
-  va_start(ap, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, ap);
-  va_end(ap);
-  return buf;
-}
+using mrpt::format;
 
 // A number for the table: "-" when undefined (0/0).
 std::string fixed(double v, int decimals = 4) {

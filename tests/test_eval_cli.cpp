@@ -1,5 +1,7 @@
 // `pedtrack eval` as a user runs it: tables, JSON, Monte Carlo runs, errors, and detections
 // against the labelled legs of a leg_tracker training bag.
+#include <mrpt/core/format.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -23,13 +25,6 @@ const char* kTracksHeader =
     "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,"
     "model_probs,status,nis\n";
 
-template <class... A>
-std::string fmt(const char* f, A... a) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, f, a...);
-  return buf;
-}
-
 // Person 1 walks along y = 0, person 2 along y = 5, 10 frames at 10 Hz, legs ±0.1 m in y.
 // Person 1 is hidden (visible_points 0) in the last frame. sensor_x = x + 1.
 std::string truthCsv() {
@@ -38,8 +33,9 @@ std::string truthCsv() {
     for (int id = 1; id <= 2; ++id) {
       const double t = 100 + 0.1 * k, x = 0.1 * k, y = id == 1 ? 0 : 5;
       const int visible = id == 1 && k == 9 ? 0 : 50;
-      s += fmt("%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,0,1,0,0.25,0.15,1.7,%d,%.4f,%.4f,%.4f,%.4f\n", t, k,
-               id, x, y, x + 1, y, visible, x, y + 0.1, x, y - 0.1);
+      s += mrpt::format(
+          "%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,0,1,0,0.25,0.15,1.7,%d,%.4f,%.4f,%.4f,%.4f\n", t, k, id,
+          x, y, x + 1, y, visible, x, y + 0.1, x, y - 0.1);
     }
   return s;
 }
@@ -51,8 +47,8 @@ std::string tracksCsv(double dx) {
   for (int k = 0; k < 10; ++k)
     for (int id = 1; id <= 2; ++id) {
       const double t = 100 + 0.1 * k, x = 0.1 * k, y = id == 1 ? 0 : 5;
-      s += fmt("%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,0,1,0,,,0.01,0,0.01,0.9,,confirmed,2\n", t, k,
-               id + 6, x + dx, y, x + 1, y);
+      s += mrpt::format("%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,0,1,0,,,0.01,0,0.01,0.9,,confirmed,2\n", t,
+                        k, id + 6, x + dx, y, x + 1, y);
     }
   return s;
 }
@@ -289,8 +285,9 @@ TEST_CASE("eval scores a simulated run: the truth as tracks, then a shifted copy
       int frame, id;
       REQUIRE(std::sscanf(rows[i].c_str(), "%lf,%d,%d,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &t,
                           &frame, &id, &x, &y, &sx, &sy, &yaw, &vx, &vy, &a, &b) == 12);
-      s += fmt("%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,,,,1,,confirmed,\n", t,
-               frame, id + 100, x + dx, y, sx, sy, yaw, vx, vy, a, b);
+      s +=
+          mrpt::format("%.6f,%d,%d,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,%.4f,%.4f,,,,1,,confirmed,\n",
+                       t, frame, id + 100, x + dx, y, sx, sy, yaw, vx, vy, a, b);
     }
     writeFile(path, s);
   };

@@ -1,4 +1,6 @@
 // `pedtrack render`: pictures and videos of a run, checked pixel by pixel where it matters.
+#include <mrpt/core/format.h>
+
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -39,12 +41,6 @@ std::size_t countColor(const cv::Mat& img, const cv::Scalar& color) {
   return n;
 }
 
-std::string fmt(const char* f, double a, double b = 0, double c = 0) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
-  return buf;
-}
-
 /// The SENA log's frames 8-10 with two tracks and two true people around the sensor at frame 10.
 struct Fixture {
   std::string dir, tracks, truth, empty_tracks, detections;
@@ -65,12 +61,12 @@ struct Fixture {
     for (int k = kFrame - 2; k <= kFrame; ++k) {
       const double back = 0.3 * (kFrame - k);  // both walk +x at 0.3 m per frame
       const auto& fk = frames[k];
-      tr += fmt("%.6f,", fk.t) + std::to_string(k) + "," + std::to_string(kTrackA.id) +
-            fmt(",%.4f,%.4f,0,0,0.3,1.0,0.2,", sx + kTrackA.dx - back, sy + kTrackA.dy) +
+      tr += mrpt::format("%.6f,", fk.t) + std::to_string(k) + "," + std::to_string(kTrackA.id) +
+            mrpt::format(",%.4f,%.4f,0,0,0.3,1.0,0.2,", sx + kTrackA.dx - back, sy + kTrackA.dy) +
             "0.25,0.15,0.04,0.01,0.02,0.9,,confirmed\n";
-      tr += fmt("%.6f,", fk.t) + std::to_string(k) + "," + std::to_string(kTrackB.id) +
-            fmt(",%.4f,%.4f,0,0,0,-0.8,0.5,,,,,,0.5,,tentative\n", sx + kTrackB.dx - back,
-                sy + kTrackB.dy);
+      tr += mrpt::format("%.6f,", fk.t) + std::to_string(k) + "," + std::to_string(kTrackB.id) +
+            mrpt::format(",%.4f,%.4f,0,0,0,-0.8,0.5,,,,,,0.5,,tentative\n", sx + kTrackB.dx - back,
+                         sy + kTrackB.dy);
     }
     tracks = dir + "/tracks.csv";
     writeFile(tracks, tr);
@@ -79,18 +75,19 @@ struct Fixture {
         "left_leg_x,left_leg_y,right_leg_x,right_leg_y\n";
     for (const Object& o : {kTruthA, kTruthB}) {
       const double x = sx + o.dx, y = sy + o.dy;
-      gt += fmt("%.6f,", t) + std::to_string(kFrame) + "," + std::to_string(o.id) +
-            fmt(",%.4f,%.4f,0,0,0,1,0,", x, y) + "0.25,0.15,1.75,40," +
-            fmt("%.4f,%.4f,", x + 0.05, y + 0.12) + fmt("%.4f,%.4f\n", x - 0.05, y - 0.12);
+      gt += mrpt::format("%.6f,", t) + std::to_string(kFrame) + "," + std::to_string(o.id) +
+            mrpt::format(",%.4f,%.4f,0,0,0,1,0,", x, y) + "0.25,0.15,1.75,40," +
+            mrpt::format("%.4f,%.4f,", x + 0.05, y + 0.12) +
+            mrpt::format("%.4f,%.4f\n", x - 0.05, y - 0.12);
     }
     truth = dir + "/truth.csv";
     writeFile(truth, gt);
     empty_tracks = dir + "/empty_tracks.csv";
     writeFile(empty_tracks, "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy\n");
     detections = dir + "/detections.csv";
-    writeFile(detections,
-              "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta\n" +
-                  fmt("%.6f,10,%.4f,%.4f,0,0,0.8,,,\n", t, sx + kDetection.dx, sy + kDetection.dy));
+    writeFile(detections, "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta\n" +
+                              mrpt::format("%.6f,10,%.4f,%.4f,0,0,0.8,,,\n", t, sx + kDetection.dx,
+                                           sy + kDetection.dy));
   }
   View view() const {
     View v;
@@ -110,9 +107,9 @@ struct Fixture {
             "--size",
             std::to_string(size),
             "--range",
-            fmt("%g", kRange),
+            mrpt::format("%g", kRange),
             "--center",
-            fmt("%.6f,%.6f", sx, sy),
+            mrpt::format("%.6f,%.6f", sx, sy),
             "-q"};
   }
 };
@@ -293,7 +290,7 @@ TEST_CASE("torso ellipses put alpha across the heading and beta along it", "[ren
   const auto rows = lines(readFile(dir + "/truth.csv"));
   REQUIRE(rows.size() == 1);  // nobody in the scenario: header only
   const double t = 1700000000.0;
-  writeFile(dir + "/truth.csv", rows[0] + "\n" + fmt("%.6f,0,1,3,0,3,0,", t) +
+  writeFile(dir + "/truth.csv", rows[0] + "\n" + mrpt::format("%.6f,0,1,3,0,3,0,", t) +
                                     "0,0,0,1.0,0.3,1.7,0,3,0.1,3,-0.1,3,0\n");
   const std::string out = dir + "/axes.png";
   REQUIRE(

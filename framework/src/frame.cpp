@@ -27,8 +27,10 @@ const mrpt::maps::CSimplePointsMap& Frame::cloud() const {
   map->insertionOptions.isPlanarMap = false;
   for (const auto& obs : observations) {
     if (!obs || !isRangeObservation(*obs)) continue;
-    if (auto velo = std::dynamic_pointer_cast<mrpt::obs::CObservationVelodyneScan>(obs)) {
-      // Both firings of every VLP-16 block (see velodyne_decode.h), mounted on the robot.
+    auto velo = std::dynamic_pointer_cast<mrpt::obs::CObservationVelodyneScan>(obs);
+    if (velo && velo->calibration.laser_corrections.size() == 16) {
+      // Both firings of every VLP-16 block (see velodyne_decode.h), mounted on the robot; MRPT
+      // decodes the 32- and 64-laser models completely itself.
       for (const auto& p : decodeVelodyne(*velo)) {
         double x, y, z;
         velo->sensorPose.composePoint(p.x, p.y, p.z, x, y, z);

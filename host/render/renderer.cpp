@@ -1,6 +1,7 @@
 #include "renderer.h"
 
-#include <cstdio>
+#include <mrpt/core/format.h>
+
 #include <string>
 
 #include "draw.h"
@@ -9,11 +10,7 @@
 namespace pedtrack::render {
 namespace {
 
-std::string format(const char* fmt, double a, double b = 0) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, fmt, a, b);
-  return buf;
-}
+using mrpt::format;
 
 cv::Mat background(const Scene& s) {
   cv::Mat img(s.view.size, s.view.size, CV_8UC3, colors::kBackground);

@@ -167,7 +167,6 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
   for (long i = 0; i < cr.getInt("count"); ++i) {
     PersonSpec ps;
     ps.id = static_cast<int>(s.people.size() + people.size()) + 1;
-    ps.section = "crowd";
     ps.body.alpha = in(0.17, 0.24);
     ps.body.beta = in(0.10, 0.15);
     ps.body.height = in(1.55, 1.92);
@@ -314,7 +313,6 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
   for (const auto& [sec, p] : people) {
     PersonSpec ps;
     ps.id = static_cast<int>(s.people.size()) + 1;
-    ps.section = sec;
     ps.body = body(p);
     ps.appear = p.getDouble("appear");
     ps.path = Trajectory::fromScript(personScript(p, s.seed, ps.id), p.getDouble("x"),

@@ -15,7 +15,6 @@ namespace pedtrack::sim {
 
 struct PersonSpec {
   int id = 0;
-  std::string section;
   BodySpec body;
   Trajectory path;
   double appear = 0;  ///< s after the scenario start when the person enters
