@@ -90,8 +90,9 @@ int benchCommand(const std::vector<std::string>& args) {
   po::options_description opts("options");
   long scans = 100000;
   int beams = 1081;
-  std::string input, out, scenario;
-  std::vector<std::string> plugin_path;
+  std::string input, out, scenario, pipeline, topic;
+  long frames = 200, repeat = 5;
+  std::vector<std::string> plugin_path, sets;
   opts.add_options()("scans", po::value(&scans)->default_value(100000),
                      "synthetic 2D scans to replay")(
       "beams", po::value(&beams)->default_value(1081), "beams per synthetic scan")(
@@ -99,6 +100,12 @@ int benchCommand(const std::vector<std::string>& args) {
       "scenario", po::value(&scenario),
       "bench the simulator on this scenario instead (frames simulated per second)")(
       "out", po::value(&out), "directory for run.json")(
+      "pipeline", po::value(&pipeline),
+      "bench this pipeline's stages instead, each timed on frames decoded beforehand")(
+      "frames", po::value(&frames)->default_value(200), "--pipeline: frames to read and cache")(
+      "repeat", po::value(&repeat)->default_value(5), "--pipeline: passes over the cached frames")(
+      "topic", po::value(&topic), "--pipeline with a bag --input: its topics")(
+      "set", po::value(&sets)->composing(), "--pipeline: override a key, section.key=value")(
       "plugin-path", po::value(&plugin_path)->composing(), "extra plugin directory (repeatable)");
   po::positional_options_description pos;
   po::variables_map vm;
@@ -106,6 +113,11 @@ int benchCommand(const std::vector<std::string>& args) {
   if (scans < 1 || beams < 2)
     throw ConfigError("pedtrack bench: --scans must be >= 1 and --beams >= 2");
 
+  if (!pipeline.empty()) {
+    if (frames < 1 || repeat < 1)
+      throw ConfigError("pedtrack bench: --frames and --repeat must be >= 1");
+    return benchStages(pipeline, input, topic, sets, frames, repeat, plugin_path);
+  }
   if (!scenario.empty()) return benchScenario(scenario, out, plugin_path);
   std::string log = input;
   if (log.empty()) {

@@ -10,6 +10,7 @@
 #include "pedtrack/errors.h"
 #include "pedtrack/eval/detection_pr.h"
 #include "pedtrack/eval/evaluate.h"
+#include "pedtrack/eval/segmentation.h"
 #ifdef PEDTRACK_WITH_ROSBAG
 #include "eval_bag.h"
 #endif
@@ -21,8 +22,9 @@ constexpr double kTimeTolerance = 1e-4;  // s: two stamps this close are one fra
 
 struct EvalArgs {
   std::vector<std::string> truth, tracks;
-  std::string detections, frame = "fixed", topic, labels_topic;
-  double threshold = 0, hota_distance = 0;
+  std::string detections, frame = "fixed", topic, labels_topic, truth_points, labels;
+  double threshold = 0, hota_distance = 0, range_bin = 1, isolation = 0.5;
+  long min_points = 10, fragment = 3;
   long min_visible = 1, following = 0;
   int nis_dof = 2;
   bool has_following = false, legs = false, json = false;
@@ -37,6 +39,18 @@ void check(bool ok, const std::string& message) {
 }
 
 void validate(const EvalArgs& a, const po::variables_map& vm) {
+  if (!a.truth_points.empty() || !a.labels.empty()) {
+    check(!a.truth_points.empty() && !a.labels.empty(),
+          "segmentation needs both --truth-points and --labels");
+    check(a.truth.empty() && a.tracks.empty() && a.detections.empty(),
+          "--truth-points/--labels score segmentation; --truth, --tracks and --detections do not "
+          "go with them");
+    check(a.min_points >= 1, "--min-points: must be >= 1");
+    check(a.fragment >= 1, "--fragment: must be >= 1");
+    check(a.isolation >= 0 && a.isolation <= kClearanceCap,
+          "--isolation: must be within [0, " + std::to_string(int(kClearanceCap)) + "] m");
+    return;
+  }
   check(!a.truth.empty(), "--truth is required");
   check(a.tracks.empty() != a.detections.empty(), "give either --tracks or --detections");
   check(a.frame == "fixed" || a.frame == "sensor",
@@ -54,6 +68,7 @@ void validate(const EvalArgs& a, const po::variables_map& vm) {
     check(!a.legs, "--legs applies to --detections only");
   } else {
     check(a.truth.size() == 1, "--detections takes one --truth");
+    check(a.range_bin > 0, "--range-bin: must be > 0 m");
     check(!a.has_following, "--following applies to --tracks only");
     check(!a.legs || a.frame == "fixed",
           "--legs: truth.csv has leg positions in the fixed frame only");
@@ -135,8 +150,18 @@ int evalDetections(const EvalArgs& a) {
                 << " detection frames match no scan of the bag (counted as false positives)\n";
   }
   const auto frames = eval::alignFrames(truth, estimates, kTimeTolerance);
-  const eval::DetectionCounts c = eval::detectionPR(frames, a.threshold);
+  const eval::DetectionCounts c = eval::detectionPR(frames, a.threshold, a.range_bin);
   std::cout << (a.json ? detectionJson(c, s) : detectionText(c, s));
+  return exit_code::kOk;
+}
+
+int evalSegmentation(const EvalArgs& a) {
+  eval::SegmentationOptions o;
+  o.min_points = a.min_points;
+  o.fragment = a.fragment;
+  o.isolation = a.isolation;
+  const eval::SegmentationReport r = eval::evaluateSegmentation(a.truth_points, a.labels, o);
+  std::cout << (a.json ? segmentationJson(r, o) : segmentationText(r, o));
   return exit_code::kOk;
 }
 
@@ -165,18 +190,32 @@ int evalCommand(const std::vector<std::string>& args) {
       "detections: take the truth points from truth.csv's leg columns")(
       "topic", po::value(&a.topic), "bag truth: the scan topic (default: the only LaserScan one)")(
       "labels-topic", po::value(&a.labels_topic)->default_value("/leg_cluster_positions"),
-      "bag truth: the geometry_msgs/PoseArray topic of labelled legs")(
+      "bag truth: the geometry_msgs/PoseArray topic of labelled legs; none: the bag has no "
+      "people (every detection is a false positive)")(
+      "range-bin", po::value(&a.range_bin)->default_value(1.0),
+      "detections: width of the distance bins of recall by range, m")(
+      "truth-points", po::value(&a.truth_points),
+      "segmentation: truth_points.bin of a simulation (pedtrack sim / the sim source)")(
+      "labels", po::value(&a.labels), "segmentation: point_labels.bin of a run on that simulation")(
+      "min-points", po::value(&a.min_points)->default_value(10),
+      "segmentation: people with fewer returns in a frame are not scored there")(
+      "fragment", po::value(&a.fragment)->default_value(3),
+      "segmentation: a cluster holds a person (or object) from this many of its points")(
+      "isolation", po::value(&a.isolation)->default_value(0.5),
+      "segmentation: people at least this clear of everything else (m) are the isolated subset")(
       "json", po::bool_switch(&a.json), "print one JSON object instead of the table");
   po::positional_options_description pos;
   po::variables_map vm;
   if (!parseOptions("eval",
                     "--truth truth.csv --tracks tracks.csv [options] | --truth truth.csv|BAG.bag "
-                    "--detections detections.csv [options]",
+                    "--detections detections.csv|clusters.csv [options] | --truth-points "
+                    "truth_points.bin --labels point_labels.bin [options]",
                     opts, pos, args, vm))
     return exit_code::kOk;
   a.has_following = vm.count("following") > 0;
   if (!vm.count("threshold")) a.threshold = a.tracks.empty() ? 0.1 : 0.75;
   validate(a, vm);
+  if (!a.truth_points.empty()) return evalSegmentation(a);
   return a.tracks.empty() ? evalDetections(a) : evalTracking(a);
 }
 

@@ -27,7 +27,7 @@ using render::ObjectIndex;
 using render::StreamSummary;
 
 struct RenderArgs {
-  std::string rawlog, tracks, truth, detections, out, center;
+  std::string rawlog, tracks, truth, detections, out, center, labels, run;
   std::vector<std::string> plugin_path;
   long frame = -1, max_frames = -1;
   double trail = 2, range = 0, fps = 0, ground_z = 0.15;
@@ -74,7 +74,20 @@ void validate(RenderArgs& a) {
   if (a.fps != 0 && (a.fps < 1 || a.fps > 240)) bad("--fps: expected 1..240 (0: the data rate)");
   if (a.trail < 0) bad("--trail: must be >= 0 s");
   if (a.max_frames == 0) bad("--max-frames 0: nothing to render");
+  if (!a.run.empty()) {
+    if (!fs::is_directory(a.run)) bad("--run '" + a.run + "': no such directory");
+    // A run's outputs, unless given one by one.
+    auto take = [&](std::string& slot, const char* name) {
+      if (slot.empty() && fs::is_regular_file(fs::path(a.run) / name))
+        slot = (fs::path(a.run) / name).string();
+    };
+    take(a.tracks, "tracks.csv");
+    take(a.detections, "detections.csv");
+    take(a.labels, "point_labels.bin");
+    take(a.truth, "truth.csv");
+  }
   requireFile("rawlog", a.rawlog);
+  requireFile("labels", a.labels);
   requireFile("tracks", a.tracks);
   requireFile("truth", a.truth);
   requireFile("detections", a.detections);
@@ -103,6 +116,12 @@ int renderCommand(const std::vector<std::string>& args) {
       "tracks", po::value(&a.tracks), "tracks.csv of the run (optional: e.g. truth only)")(
       "truth", po::value(&a.truth), "truth.csv (simulated ground truth), drawn as outlines")(
       "detections", po::value(&a.detections), "detections.csv, drawn as crosses")(
+      "labels", po::value(&a.labels),
+      "point_labels.bin of the run (colours ground, clusters and removed points) or "
+      "truth_points.bin of a simulation (colours each true person)")(
+      "run", po::value(&a.run),
+      "a run's --out directory: its tracks.csv, detections.csv, point_labels.bin and truth.csv "
+      "(those present and not given on their own)")(
       "out", po::value(&a.out)->required(), "output: FILE.png (one frame / overlay) or FILE.mp4")(
       "frame", po::value(&a.frame)->default_value(-1),
       "PNG of this frame index (default: overlay of the whole run)")(
@@ -122,8 +141,9 @@ int renderCommand(const std::vector<std::string>& args) {
   po::positional_options_description pos;
   po::variables_map vm;
   if (!parseOptions("render",
-                    "--rawlog R [--tracks T] [--truth G] --out FILE.png|FILE.mp4 [options]", opts,
-                    pos, args, vm))
+                    "--rawlog R [--run DIR] [--tracks T] [--truth G] [--labels L] --out "
+                    "FILE.png|FILE.mp4 [options]",
+                    opts, pos, args, vm))
     return 0;
   a.quiet = vm.count("quiet") > 0;
   validate(a);
@@ -136,6 +156,8 @@ int renderCommand(const std::vector<std::string>& args) {
   if (!a.truth.empty()) truth = std::make_unique<ObjectIndex>(readObjectTable(a.truth).rows);
   if (!a.detections.empty())
     detections = std::make_unique<ObjectIndex>(readDetectionTable(a.detections).rows);
+  std::unique_ptr<render::LabelSource> labels;
+  if (!a.labels.empty()) labels = std::make_unique<render::LabelSource>(a.labels);
 
   const long limit = a.frame >= 0 ? a.frame + 1 : a.max_frames;
   if (a.max_frames >= 0 && a.frame >= a.max_frames)
@@ -173,6 +195,7 @@ int renderCommand(const std::vector<std::string>& args) {
   scene.ground_z = a.ground_z;
   scene.trail_s = a.trail;
   scene.video = a.video;
+  scene.labels = labels.get();
   scene.view = render::fitView(center.value_or(summary.sensor_path.front()), a.range, a.size,
                                mustSee(scene));
 

@@ -1,5 +1,6 @@
 // `pedtrack sim SCENARIO.ini --out DIR`: simulates a scenario into DIR/sim.rawlog (what the
-// real sensor and odometry would have logged) and DIR/truth.csv (where everyone really was).
+// real sensor and odometry would have logged), DIR/truth.csv (where everyone really was) and
+// DIR/truth_points.bin (what each return hit).
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -43,8 +44,9 @@ int simCommand(const std::vector<std::string>& args) {
   opts.add_options()("scenario", po::value(&scenario), "scenario file (configs/scenarios/*.ini)")(
       "out,o", po::value(&out), "directory for sim.rawlog and truth.csv")(
       "seed", po::value(&seed)->default_value(-1), "random seed (-1: the scenario's own)")(
-      "keys", "list every scenario section and key (markdown tables)")("quiet,q",
-                                                                       "no progress output");
+      "keys", "list every scenario section and key (markdown tables)")(
+      "no-point-truth", "do not write truth_points.bin (what each return hit)")(
+      "quiet,q", "no progress output");
   po::positional_options_description pos;
   pos.add("scenario", 1);
   po::variables_map vm;
@@ -62,15 +64,19 @@ int simCommand(const std::vector<std::string>& args) {
 
   sim::Simulator simulator(sim::loadScenario(scenario, seed));
   std::filesystem::create_directories(out);
-  const std::string rawlog = out + "/sim.rawlog", truth = out + "/truth.csv";
+  const std::string rawlog = out + "/sim.rawlog", truth = out + "/truth.csv",
+                    points = out + "/truth_points.bin";
   mrpt::io::CFileOutputStream file;
   if (!file.open(rawlog)) throw ConfigError("--out: cannot write '" + rawlog + "'");
   auto archive = mrpt::serialization::archiveFrom(file);
   std::unique_ptr<sim::TruthCsvWriter> truth_out;
+  std::unique_ptr<LabelFileWriter> points_out;
   try {
     truth_out = std::make_unique<sim::TruthCsvWriter>(truth);
+    if (!vm.count("no-point-truth"))
+      points_out = std::make_unique<LabelFileWriter>(points, LabelKind::Truth);
   } catch (const DataError&) {
-    throw ConfigError("--out: cannot write '" + truth + "'");
+    throw ConfigError("--out: cannot write '" + (truth_out ? points : truth) + "'");
   }
 
   Progress progress("sim", !vm.count("quiet"));
@@ -81,6 +87,7 @@ int simCommand(const std::vector<std::string>& args) {
   while (!Pipeline::stopRequested() && simulator.next(f)) {
     for (const auto& o : f.observations) archive << *o;
     truth_out->write(f);
+    if (points_out) points_out->write(sim::pointTruth(f));
     for (const auto& r : f.truth) person_points += r.visible_points;
     ++frames;
     progress.update(frames, double(frames) / simulator.frameCount());
@@ -91,9 +98,11 @@ int simCommand(const std::vector<std::string>& args) {
   if (!sc.description.empty()) std::printf("%s: %s\n", sc.name.c_str(), sc.description.c_str());
   std::printf(
       "%s: %zu frames of %s at %.0f Hz, %zu people, %zu person returns; %.2f s (%.0f frames/s)\n"
-      "wrote %s and %s\n",
+      "wrote %s, %s%s%s\n",
       sc.name.c_str(), frames, sc.sensor.model.c_str(), sc.sensor.rate, sc.people.size(),
-      person_points, secs, frames / std::max(secs, 1e-9), rawlog.c_str(), truth.c_str());
+      person_points, secs, frames / std::max(secs, 1e-9), rawlog.c_str(), truth.c_str(),
+      points_out ? " and " : "", points_out ? points.c_str() : "");
+  if (points_out) points_out->close();
   return Pipeline::stopRequested() ? exit_code::kFailure : exit_code::kOk;
 }
 

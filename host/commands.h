@@ -13,6 +13,12 @@ int evalCommand(const std::vector<std::string>& args);
 int simCommand(const std::vector<std::string>& args);
 int renderCommand(const std::vector<std::string>& args);
 
+/// `pedtrack bench --pipeline`: the stages of a pipeline timed on frames read (and decoded)
+/// beforehand, so the figures are the stages' own.
+int benchStages(const std::string& pipeline, const std::string& input, const std::string& topic,
+                const std::vector<std::string>& sets, long frames, long repeat,
+                const std::vector<std::string>& plugin_path);
+
 /// Installs SIGINT/SIGTERM handlers that ask a running pipeline to stop after the current frame.
 void installStopHandlers();
 

@@ -6,6 +6,7 @@
 #include <sensor_msgs/LaserScan.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -45,6 +46,7 @@ std::vector<eval::Object> toObjects(const geometry_msgs::PoseArray& a) {
     o.id = long(i);
     o.x = a.poses[i].position.x;
     o.y = a.poses[i].position.y;
+    o.range = std::hypot(o.x, o.y);  // laser frame
     out.push_back(o);
   }
   return out;
@@ -62,7 +64,8 @@ BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
   }
   BagLabels out;
   out.scan_topic = chooseScanTopic(bag, path, scan_topic);
-  {
+  const bool unlabelled = labels_topic == "none";  // a bag with no people: no truth anywhere
+  if (!unlabelled) {
     rosbag::View labels(bag, rosbag::TopicQuery(labels_topic));
     bool ok = labels.size() > 0;
     for (const rosbag::ConnectionInfo* c : labels.getConnections())

@@ -16,7 +16,8 @@ struct BagLabels {
 /// A label array belongs to the scan with the same header stamp; an array with a zero stamp (as
 /// in leg_tracker's *_extracted.bags, whose arrays are unstamped) belongs to the next scan in bag
 /// order, as leg_tracker's train_leg_detector reads them. A scan without labels has no truth
-/// points (every detection there is a false positive). `scan_topic` empty: the bag's only
+/// points (every detection there is a false positive); `labels_topic` "none" reads the bag as
+/// having no people at all (leg_tracker's negative_2.bag). `scan_topic` empty: the bag's only
 /// sensor_msgs/LaserScan topic. Throws ConfigError (bad bag, missing or ambiguous topic).
 BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
                         const std::string& labels_topic);

@@ -5,42 +5,12 @@
 #include <cmath>
 
 #include "pedtrack/outputs.h"
+#include "report_format.h"
 
 namespace pedtrack::cli {
 namespace {
 
 using mrpt::format;
-
-// A number for the table: "-" when undefined (0/0).
-std::string fixed(double v, int decimals = 4) {
-  return std::isfinite(v) ? format("%.*f", decimals, v) : std::string("-");
-}
-
-// The report is a handful of flat objects; a JSON library would be a dependency for a dozen
-// keys (as in writeRunJson). Undefined numbers (0/0) are null.
-class Json {
- public:
-  explicit Json(bool multiline = false) : sep_(multiline ? ",\n  " : ", "), multiline_(multiline) {}
-  Json& num(const char* key, double v) {
-    return raw(key, std::isfinite(v) ? format("%.10g", v) : std::string("null"));
-  }
-  Json& count(const char* key, std::size_t v) { return raw(key, std::to_string(v)); }
-  Json& text(const char* key, const std::string& v) {
-    return raw(key, "\"" + jsonEscape(v) + "\"");
-  }
-  Json& raw(const char* key, const std::string& v) {
-    out_ += (first_ ? "" : sep_) + std::string("\"") + key + "\": " + v;
-    first_ = false;
-    return *this;
-  }
-  std::string str() const { return multiline_ ? "{\n  " + out_ + "\n}" : "{" + out_ + "}"; }
-
- private:
-  std::string sep_;
-  bool multiline_;
-  std::string out_;
-  bool first_ = true;
-};
 
 std::string consistencyJson(const std::optional<eval::ConsistencyReport>& c, const char* p) {
   if (!c) return "null";
@@ -230,8 +200,18 @@ std::string detectionText(const eval::DetectionCounts& c, const EvalSetup& s) {
       format("  mean distance       %s m   (of true positives)\n", fixed(c.meanDistance()).c_str());
   o += format("  TP / FP / FN        %zu / %zu / %zu\n", c.tp, c.fp, c.fn);
   o += format("  truth points        %zu   (scored)\n", c.truth_points);
-  o += format("  detections          %zu\n", c.detections);
+  o += format("  detections          %zu   (%s per frame; false positives %s per frame)\n",
+              c.detections, fixed(c.frames ? double(c.detections) / c.frames : NAN, 2).c_str(),
+              fixed(c.frames ? double(c.fp) / c.frames : NAN, 3).c_str());
   o += format("  unscored matches    %zu\n", c.unscored_matches);
+  if (!c.by_range.empty()) {
+    o += format("\n  recall by distance from the sensor\n  %-12s %8s %8s %8s\n", "range (m)",
+                "truth", "TP", "recall");
+    for (const auto& [k, v] : c.by_range)
+      o += format("  %4.1f - %-5.1f %8zu %8zu %8s\n", k * c.range_bin, (k + 1) * c.range_bin,
+                  v.first + v.second, v.first,
+                  fixed(double(v.first) / double(v.first + v.second), 3).c_str());
+  }
   return o;
 }
 
@@ -253,7 +233,19 @@ std::string detectionJson(const eval::DetectionCounts& c, const EvalSetup& s) {
       .num("precision", c.precision())
       .num("recall", c.recall())
       .num("f1", c.f1())
-      .num("mean_distance_m", c.meanDistance());
+      .num("mean_distance_m", c.meanDistance())
+      .num("false_positives_per_frame", c.frames ? double(c.fp) / c.frames : NAN);
+  std::string bins = "[";
+  for (const auto& [k, v] : c.by_range) {
+    Json b;
+    b.num("from_m", k * c.range_bin)
+        .num("to_m", (k + 1) * c.range_bin)
+        .count("truth", v.first + v.second)
+        .count("tp", v.first)
+        .num("recall", double(v.first) / double(v.first + v.second));
+    bins += (bins.size() > 1 ? ", " : "") + b.str();
+  }
+  j.raw("recall_by_range", bins + "]");
   return j.str() + "\n";
 }
 

@@ -5,6 +5,7 @@
 
 #include "pedtrack/eval/detection_pr.h"
 #include "pedtrack/eval/evaluate.h"
+#include "pedtrack/eval/segmentation.h"
 
 namespace pedtrack::cli {
 
@@ -23,5 +24,7 @@ std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s);
 std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s);
 std::string detectionText(const eval::DetectionCounts& c, const EvalSetup& s);
 std::string detectionJson(const eval::DetectionCounts& c, const EvalSetup& s);
+std::string segmentationText(const eval::SegmentationReport& r, const eval::SegmentationOptions& o);
+std::string segmentationJson(const eval::SegmentationReport& r, const eval::SegmentationOptions& o);
 
 }  // namespace pedtrack::cli

@@ -6,6 +6,9 @@
 #include <mrpt/obs/CObservationRotatingScan.h>
 #include <mrpt/obs/CObservationVelodyneScan.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "pedtrack/velodyne_decode.h"
 
 namespace pedtrack {
@@ -43,6 +46,26 @@ const mrpt::maps::CSimplePointsMap& Frame::cloud() const {
   map->mark_as_modified();
   cloud_ = std::move(map);
   return *cloud_;
+}
+
+std::vector<PointLabel>& Frame::labels() {
+  const std::size_t n = cloud().size();
+  if (point_labels.size() != n) point_labels.assign(n, PointLabel::Kept);
+  return point_labels;
+}
+
+double Frame::heightOf(std::size_t i) const {
+  const auto& c = cloud();
+  const double x = c.getPointsBufferRef_x()[i], y = c.getPointsBufferRef_y()[i],
+               z = c.getPointsBufferRef_z()[i];
+  return ground.valid ? ground.height(x, y, z) : z;
+}
+
+double GroundPlane::angleTo(const GroundPlane& o) const {
+  const double dot = nx * o.nx + ny * o.ny + nz * o.nz;
+  const double n1 = std::sqrt(nx * nx + ny * ny + nz * nz),
+               n2 = std::sqrt(o.nx * o.nx + o.ny * o.ny + o.nz * o.nz);
+  return std::acos(std::clamp(dot / (n1 * n2), -1.0, 1.0));
 }
 
 }  // namespace pedtrack

@@ -112,6 +112,55 @@ void DetectionsCsvWriter::write(const Frame& f) {
   frameWritten();
 }
 
+const char* ClustersCsvWriter::header() {
+  return "t,frame,cluster,points,x,y,z,sensor_x,sensor_y,size_x,size_y,size_z,pair";
+}
+
+static std::vector<std::string> featureNames(const Frame& f) {
+  return f.cluster_feature_names ? *f.cluster_feature_names : std::vector<std::string>();
+}
+
+static std::string clustersHeader(const Frame& first) {
+  std::string h = ClustersCsvWriter::header();
+  for (const auto& name : featureNames(first)) h += "," + name;
+  return h;
+}
+
+ClustersCsvWriter::ClustersCsvWriter(const std::string& path, const Frame& first)
+    : CsvStream(path, clustersHeader(first).c_str()), features_(featureNames(first)) {}
+
+void ClustersCsvWriter::write(const Frame& f) {
+  char buf[512];
+  // A later frame's features go under the header's names (by name, empty where absent).
+  const std::vector<std::string>* names = f.cluster_feature_names.get();
+  std::vector<int> column(features_.size(), -1);
+  for (std::size_t k = 0; k < features_.size(); ++k)
+    if (names)
+      for (std::size_t j = 0; j < names->size(); ++j)
+        if ((*names)[j] == features_[k]) column[k] = int(j);
+  for (std::size_t c = 0; c < f.clusters.size(); ++c) {
+    const Cluster& cl = f.clusters[c];
+    double x = 0, y = 0, z = 0, sx = 0, sy = 0;
+    f.robot_pose.composePoint(cl.cx, cl.cy, cl.cz, x, y, z);
+    toSensorFrame(f, x, y, sx, sy);
+    int n = std::snprintf(buf, sizeof buf,
+                          "%.6f,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%d", f.t,
+                          f.index, c, cl.indices.size(), x, y, cl.cz, sx, sy, cl.size_x, cl.size_y,
+                          cl.size_z, cl.pair);
+    out_.write(buf, n);
+    for (int j : column) {
+      if (j >= 0 && j < int(cl.features.size())) {
+        n = std::snprintf(buf, sizeof buf, ",%.6g", cl.features[j]);
+        out_.write(buf, n);
+      } else {
+        out_ << ',';
+      }
+    }
+    out_ << '\n';
+  }
+  frameWritten();
+}
+
 std::string jsonEscape(const std::string& s) {
   std::string o;
   for (char c : s) {

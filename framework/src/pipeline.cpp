@@ -1,10 +1,12 @@
 #include "pedtrack/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/point_labels.h"
 #include "pedtrack/progress.h"
 
 namespace pedtrack {
@@ -61,6 +63,12 @@ Pipeline::Pipeline(const PipelineConfig& config) : config_(config) {
 
 Pipeline::~Pipeline() = default;
 
+std::vector<Stage*> Pipeline::stages() const {
+  std::vector<Stage*> out;
+  for (const auto& s : stages_) out.push_back(s.get());
+  return out;
+}
+
 RunSummary Pipeline::run(const RunOptions& opt) {
   RunSummary sum;
   sum.pipeline = config_.file;
@@ -69,6 +77,8 @@ RunSummary Pipeline::run(const RunOptions& opt) {
 
   std::unique_ptr<TracksCsvWriter> csv;
   std::unique_ptr<DetectionsCsvWriter> detections_csv;  // created on the first detection
+  std::unique_ptr<ClustersCsvWriter> clusters_csv;      // created on the first cluster
+  std::unique_ptr<LabelFileWriter> labels;
   // Plugins start first: one that rejects the output directory (exit 2) leaves nothing behind.
   const bool created = !opt.out_dir.empty() && std::filesystem::create_directories(opt.out_dir);
   try {
@@ -82,8 +92,14 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   }
   if (!opt.out_dir.empty()) {
     csv = std::make_unique<TracksCsvWriter>(opt.out_dir + "/tracks.csv");
-    // A stale detections.csv of an earlier run would be read as this run's.
-    std::filesystem::remove(opt.out_dir + "/detections.csv");
+    // Stale side outputs of an earlier run would be read as this run's.
+    for (const char* f : {"/detections.csv", "/clusters.csv", "/point_labels.bin"})
+      std::filesystem::remove(opt.out_dir + f);
+    const bool segments = std::any_of(stages_.begin(), stages_.end(), [](const auto& s) {
+      return dynamic_cast<const Segmenter*>(s.get()) != nullptr;
+    });
+    if (segments && opt.point_labels)
+      labels = std::make_unique<LabelFileWriter>(opt.out_dir + "/point_labels.bin", LabelKind::Run);
   }
   Progress progress("run", opt.progress);
   const auto start = Clock::now();
@@ -126,6 +142,10 @@ RunSummary Pipeline::run(const RunOptions& opt) {
     if (csv && !detections_csv && !frame.detections.empty())
       detections_csv = std::make_unique<DetectionsCsvWriter>(opt.out_dir + "/detections.csv");
     if (detections_csv) detections_csv->write(frame);
+    if (csv && !clusters_csv && !frame.clusters.empty())
+      clusters_csv = std::make_unique<ClustersCsvWriter>(opt.out_dir + "/clusters.csv", frame);
+    if (clusters_csv) clusters_csv->write(frame);
+    if (labels) labels->write(runLabels(frame));
     ++sum.frames_processed;
     progress.update(sum.frames_read, source_->progress());
   }
@@ -137,6 +157,8 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   progress.done(sum.frames_read);
   if (csv) csv->close();
   if (detections_csv) detections_csv->close();
+  if (clusters_csv) clusters_csv->close();
+  if (labels) labels->close();
   if (!opt.out_dir.empty()) writeRunJson(opt.out_dir + "/run.json", sum);
   return sum;
 }

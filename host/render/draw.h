@@ -9,6 +9,7 @@
 
 #include "pedtrack/frame.h"
 #include "pedtrack/object_table.h"
+#include "pedtrack/point_labels.h"
 #include "view.h"
 
 namespace pedtrack::render {
@@ -21,10 +22,14 @@ void drawScaleBar(cv::Mat& img, const View& view);
 
 struct PointCounts {
   std::size_t ground = 0, other = 0;
+  std::size_t removed = 0, clustered = 0;  ///< with run labels
 };
-/// The frame's cloud in the fixed frame: points lower than `ground_z` in the robot frame grey,
-/// the others light blue. 2D scans are horizontal slices, so their points are never ground.
-PointCounts drawPoints(cv::Mat& img, const View& view, const Frame& frame, double ground_z);
+/// The frame's cloud in the fixed frame. Without labels: points lower than `ground_z` in the
+/// robot frame grey, the others light blue (2D scans are horizontal slices: never ground). With
+/// a run's labels: ground grey, removed dim red, unclustered light blue, each cluster its own
+/// colour; with truth labels: ground grey, objects light blue, each person its own colour.
+PointCounts drawPoints(cv::Mat& img, const View& view, const Frame& frame, double ground_z,
+                       const LabelFrame* labels = nullptr, LabelKind kind = LabelKind::Run);
 /// The sensor as a triangle pointing along its heading.
 void drawSensor(cv::Mat& img, const View& view, const mrpt::poses::CPose3D& sensor_pose);
 /// A thin polyline through fixed-frame points (the sensor's path).
@@ -55,10 +60,13 @@ void drawText(cv::Mat& img, const std::string& text, cv::Point origin, const cv:
               double scale = 0.45);
 /// Lines of text on a panel in the top-left corner.
 void drawInfoPanel(cv::Mat& img, const std::vector<std::string>& lines);
+/// How points are coloured, for the legend.
+enum class PointColours { ByHeight, RunLabels, TruthLabels };
+
 /// What each mark means, bottom left, or with `pick_corner` in the bottom corner that hides less
 /// of the picture (not in videos, where a legend jumping between corners distracts). `overlay`
 /// adds the path markers.
-void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detections,
-                bool pick_corner);
+void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detections, bool pick_corner,
+                PointColours points = PointColours::ByHeight);
 
 }  // namespace pedtrack::render

@@ -66,24 +66,46 @@ void drawScaleBar(cv::Mat& img, const View& view) {
   drawText(img, label, {(left + right - w) / 2, y - 9}, colors::kText);
 }
 
-PointCounts drawPoints(cv::Mat& img, const View& view, const Frame& frame, double ground_z) {
+PointCounts drawPoints(cv::Mat& img, const View& view, const Frame& frame, double ground_z,
+                       const LabelFrame* labels, LabelKind kind) {
   bool planar = !frame.observations.empty();
   for (const auto& obs : frame.observations)
     if (obs && isRangeObservation(*obs) && !IS_CLASS(*obs, mrpt::obs::CObservation2DRangeScan))
       planar = false;
   const auto& cloud = frame.cloud();
   PointCounts counts;
-  std::vector<cv::Point> ground, other;
+  std::vector<cv::Point> ground, other, removed;
+  std::vector<std::pair<cv::Point, std::int32_t>> grouped;  // cluster or person points
   ground.reserve(cloud.size());
   other.reserve(cloud.size());
+  if (labels && labels->labels.size() != cloud.size()) labels = nullptr;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     float lx, ly, lz;
     cloud.getPoint(i, lx, ly, lz);
     double gx, gy, gz;
     frame.robot_pose.composePoint(lx, ly, lz, gx, gy, gz);
-    const bool is_ground = !planar && lz < ground_z;
-    (is_ground ? counts.ground : counts.other)++;
-    (is_ground ? ground : other).push_back(view.pixel(gx, gy));
+    const cv::Point px = view.pixel(gx, gy);
+    if (!labels) {
+      const bool is_ground = !planar && lz < ground_z;
+      (is_ground ? counts.ground : counts.other)++;
+      (is_ground ? ground : other).push_back(px);
+      continue;
+    }
+    const std::int32_t l = labels->labels[i];
+    const bool truth = kind == LabelKind::Truth;
+    if (truth ? l == truth_label::kGround : l == run_label::kGround) {
+      ++counts.ground;
+      ground.push_back(px);
+    } else if (!truth && l == run_label::kRemoved) {
+      ++counts.removed;
+      removed.push_back(px);
+    } else if (truth ? truth_label::isPerson(l) : l >= 0) {
+      ++counts.clustered;
+      grouped.emplace_back(px, l);
+    } else {
+      ++counts.other;
+      other.push_back(px);
+    }
   }
   // 2x2 px per point: single pixels vanish on a 900 px picture of a sparse 2D scan. Ground
   // first, so obstacles stay visible where both project to the same pixel.
@@ -98,7 +120,13 @@ PointCounts drawPoints(cv::Mat& img, const View& view, const Frame& frame, doubl
         }
   };
   paint(ground, colors::kGround);
+  paint(removed, colors::kRemoved);
   paint(other, colors::kPoint);
+  std::vector<cv::Point> one(1);
+  for (const auto& [p, id] : grouped) {
+    one[0] = p;
+    paint(one, clusterColor(id));
+  }
   return counts;
 }
 

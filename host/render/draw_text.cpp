@@ -50,8 +50,8 @@ void drawInfoPanel(cv::Mat& img, const std::vector<std::string>& lines) {
              scale);
 }
 
-void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detections,
-                bool pick_corner) {
+void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detections, bool pick_corner,
+                PointColours points) {
   // One entry per mark: a glyph drawn by a small lambda, then its meaning.
   struct Entry {
     std::string text;
@@ -59,16 +59,30 @@ void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detection
   };
   const cv::Scalar track = trackColor(1);
   std::vector<Entry> entries;
-  entries.push_back({"points", [&](cv::Point c) {
-                       cv::rectangle(img, c - cv::Point(1, 1), c, colors::kPoint, cv::FILLED);
-                       cv::rectangle(img, c + cv::Point(4, 2), c + cv::Point(5, 3), colors::kPoint,
-                                     cv::FILLED);
-                     }});
-  entries.push_back({"ground points", [&](cv::Point c) {
-                       cv::rectangle(img, c - cv::Point(1, 1), c, colors::kGround, cv::FILLED);
-                       cv::rectangle(img, c + cv::Point(4, 2), c + cv::Point(5, 3), colors::kGround,
-                                     cv::FILLED);
-                     }});
+  auto dots = [&](const std::string& text, const cv::Scalar& a, const cv::Scalar& b) {
+    entries.push_back({text, [&img, a, b](cv::Point c) {
+                         cv::rectangle(img, c - cv::Point(1, 1), c, a, cv::FILLED);
+                         cv::rectangle(img, c + cv::Point(4, 2), c + cv::Point(5, 3), b,
+                                       cv::FILLED);
+                       }});
+  };
+  switch (points) {
+    case PointColours::ByHeight:
+      dots("points", colors::kPoint, colors::kPoint);
+      dots("ground points", colors::kGround, colors::kGround);
+      break;
+    case PointColours::RunLabels:
+      dots("clusters (a colour each)", clusterColor(1), clusterColor(2));
+      dots("unclustered points", colors::kPoint, colors::kPoint);
+      dots("ground (removed)", colors::kGround, colors::kGround);
+      dots("removed by band / region", colors::kRemoved, colors::kRemoved);
+      break;
+    case PointColours::TruthLabels:
+      dots("true people (a colour each)", clusterColor(1), clusterColor(2));
+      dots("objects", colors::kPoint, colors::kPoint);
+      dots("ground", colors::kGround, colors::kGround);
+      break;
+  }
   entries.push_back({"sensor", [&](cv::Point c) {
                        const std::vector<cv::Point> tri = {
                            c + cv::Point(8, 0), c + cv::Point(-5, -5), c + cv::Point(-5, 5)};

@@ -1,6 +1,7 @@
 #include "palette.h"
 
 #include <array>
+#include <cmath>
 
 namespace pedtrack::render {
 namespace {
@@ -28,6 +29,31 @@ cv::Scalar trackColor(long id) {
 
 int trackPaletteSize() {
   return static_cast<int>(kTrackPalette.size());
+}
+
+cv::Scalar clusterColor(long id) {
+  // Golden-angle steps over the 260° of hue outside [50°, 150°) (yellow to green).
+  const double u =
+      std::fmod(static_cast<double>(static_cast<unsigned long>(id) % 100003) * 0.6180339887, 1.0);
+  double hue = u * 260.0;
+  if (hue >= 50) hue += 100;
+  // HSV (S 0.6, V 1) to BGR.
+  const double s = 0.6, h6 = hue / 60.0, f = h6 - std::floor(h6);
+  const double p = 255 * (1 - s), q = 255 * (1 - s * f), t = 255 * (1 - s * (1 - f));
+  switch (static_cast<int>(h6) % 6) {
+    case 0:
+      return {p, t, 255};
+    case 1:
+      return {p, 255, q};
+    case 2:
+      return {t, 255, p};
+    case 3:
+      return {255, q, p};
+    case 4:
+      return {255, p, t};
+    default:
+      return {q, p, 255};
+  }
 }
 
 }  // namespace pedtrack::render

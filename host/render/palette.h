@@ -14,6 +14,7 @@ inline const cv::Scalar kGridMajor(84, 80, 78);
 inline const cv::Scalar kGridLabel(150, 145, 140);
 inline const cv::Scalar kGround(120, 120, 120);  ///< points below --ground-z
 inline const cv::Scalar kPoint(255, 235, 205);   ///< other points: white with a blue tint
+inline const cv::Scalar kRemoved(70, 60, 150);   ///< points a band or region stage removed
 inline const cv::Scalar kSensor(255, 255, 255);  ///< sensor triangle (outlined in kOutline)
 inline const cv::Scalar kSensorPath(150, 150, 150);
 inline const cv::Scalar kTruth(80, 230, 80);       ///< ground truth outlines and paths
@@ -27,5 +28,8 @@ inline const cv::Scalar kPanel(45, 40, 38);  ///< legend and info panel fill
 cv::Scalar trackColor(long id);
 /// Number of distinct track colours before they repeat.
 int trackPaletteSize();
+/// The colour of the points of cluster (or true person) `id`: hues spread by the golden angle,
+/// skipping the yellow–green band of detections and truth.
+cv::Scalar clusterColor(long id);
 
 }  // namespace pedtrack::render

@@ -21,7 +21,26 @@ cv::Mat background(const Scene& s) {
 void finish(cv::Mat& img, const Scene& s, const std::vector<std::string>& info, bool overlay) {
   drawInfoPanel(img, info);
   drawScaleBar(img, s.view);
-  drawLegend(img, overlay, s.truth != nullptr, s.detections != nullptr, !s.video);
+  const PointColours colours = !s.labels                            ? PointColours::ByHeight
+                               : s.labels->kind() == LabelKind::Run ? PointColours::RunLabels
+                                                                    : PointColours::TruthLabels;
+  drawLegend(img, overlay, s.truth != nullptr, s.detections != nullptr, !s.video, colours);
+}
+
+// The frame's points, coloured by the label file when it has this frame.
+PointCounts points(cv::Mat& img, const Scene& s, const Frame& frame) {
+  const LabelFrame* labels = s.labels ? s.labels->at(frame.index, frame.cloud().size()) : nullptr;
+  return drawPoints(img, s.view, frame, s.ground_z, labels,
+                    s.labels ? s.labels->kind() : LabelKind::Run);
+}
+
+// "points N (ground G, ...)" for the info panel.
+std::string pointsLine(const PointCounts& p) {
+  std::string o = "points " + std::to_string(p.ground + p.other + p.removed + p.clustered) +
+                  " (ground " + std::to_string(p.ground);
+  if (p.removed) o += ", removed " + std::to_string(p.removed);
+  if (p.clustered) o += ", clustered " + std::to_string(p.clustered);
+  return o + ")";
 }
 
 /// Paths of every object of `index` over [t0, t1] of the table's own clock.
@@ -43,7 +62,7 @@ cv::Mat renderFrame(const Scene& s, const Frame& frame) {
   const std::size_t upto = std::min(frame.index + 1, s.sensor_path.size());
   drawPolyline(img, s.view, {s.sensor_path.begin(), s.sensor_path.begin() + upto},
                colors::kSensorPath, 1);
-  const PointCounts points = drawPoints(img, s.view, frame, s.ground_z);
+  const PointCounts counts = points(img, s, frame);
 
   const long index = static_cast<long>(frame.index);
   const FrameRows tracks = s.tracks->at(frame.t, index);
@@ -70,8 +89,7 @@ cv::Mat renderFrame(const Scene& s, const Frame& frame) {
   std::vector<std::string> info = {
       "frame " + std::to_string(frame.index) +
           format("   t %.3f s (+%.2f s)", frame.t, frame.t - s.t_first),
-      "points " + std::to_string(points.ground + points.other) + " (ground " +
-          std::to_string(points.ground) + ")   tracks " + std::to_string(tracks.rows.size())};
+      pointsLine(counts) + "   tracks " + std::to_string(tracks.rows.size())};
   if (s.truth || s.detections)
     info.push_back((s.truth ? "truth " + std::to_string(truth.rows.size()) + "   " : "") +
                    (s.detections ? "detections " + std::to_string(detections.rows.size()) : ""));
@@ -82,7 +100,7 @@ cv::Mat renderFrame(const Scene& s, const Frame& frame) {
 cv::Mat renderOverlay(const Scene& s, const Frame& last) {
   cv::Mat img = background(s);
   drawPolyline(img, s.view, s.sensor_path, colors::kSensorPath, 1);
-  const PointCounts points = drawPoints(img, s.view, last, s.ground_z);
+  const PointCounts counts = points(img, s, last);
   if (s.detections)
     for (const auto& r : s.detections->rows()) drawDetection(img, s.view, r, 5);
   if (s.truth) {
@@ -105,8 +123,7 @@ cv::Mat renderOverlay(const Scene& s, const Frame& last) {
       "overlay of frames 0-" + std::to_string(last.index) +
           format("   %.1f s from t %.3f", last.t - s.t_first, s.t_first),
       "tracks " + std::to_string(s.tracks->paths().size()) + " ids, " +
-          std::to_string(s.tracks->rows().size()) + " rows   points (last frame) " +
-          std::to_string(points.ground + points.other)};
+          std::to_string(s.tracks->rows().size()) + " rows   last frame's " + pointsLine(counts)};
   if (s.truth || s.detections)
     info.push_back(
         (s.truth ? "truth " + std::to_string(s.truth->paths().size()) + " ids   " : "") +

@@ -4,6 +4,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "label_source.h"
 #include "object_index.h"
 #include "pedtrack/frame.h"
 #include "view.h"
@@ -21,6 +22,7 @@ struct Scene {
   double ground_z = 0.15;                   ///< m, robot frame: lower points are ground
   double trail_s = 2;                       ///< s of track and truth history behind each frame
   bool video = false;                       ///< frames of a video: keep every mark in place
+  LabelSource* labels = nullptr;            ///< per-point labels (--labels / --run), or null
 };
 
 /// One frame: points, sensor, the rows of the frame's tracks, truth and detections, and the

@@ -15,8 +15,33 @@ namespace pedtrack {
 /// A group of points (indices into Frame::cloud()) that a segmenter believes is one object.
 struct Cluster {
   std::vector<std::uint32_t> indices;
-  std::vector<double> features;   ///< segmenter- or classifier-defined feature vector
-  double cx = 0, cy = 0, cz = 0;  ///< centroid, robot frame (m)
+  /// Segmenter-defined feature vector; its names are Frame::cluster_feature_names.
+  std::vector<double> features;
+  /// Where the object is, robot frame (m): the centroid of the points, or the centre of the
+  /// shape the segmenter fitted (a leg circle's centre).
+  double cx = 0, cy = 0, cz = 0;
+  /// Axis-aligned bounding box of the points in the robot frame: sizes along x, y, z (m).
+  double size_x = 0, size_y = 0, size_z = 0;
+  /// Index of the cluster this one pairs with (the other leg of one person), -1 for none.
+  int pair = -1;
+};
+
+/// What the stages decided about one point of Frame::cloud(). Stages only mark points; the
+/// cloud itself is never copied or erased from, so every stage sees the same indices.
+enum class PointLabel : std::uint8_t {
+  Kept = 0,     ///< still in play for the next stage
+  Ground = 1,   ///< removed as ground (a ground stage)
+  Removed = 2,  ///< removed by a height band, region of interest or range limit
+};
+
+/// A ground plane in the robot frame: n·p + d = 0 with a unit normal n pointing up, so
+/// height(p) = n·p + d is a point's signed height above the ground (m).
+struct GroundPlane {
+  bool valid = false;
+  double nx = 0, ny = 0, nz = 1, d = 0;
+  double height(double x, double y, double z) const { return nx * x + ny * y + nz * z + d; }
+  /// Angle between this plane's normal and another's (rad).
+  double angleTo(const GroundPlane& o) const;
 };
 
 /// A cluster that a classifier scored, with the measurement a tracker consumes (fixed frame).
@@ -52,13 +77,29 @@ struct Frame {
   std::vector<mrpt::obs::CObservation::Ptr> observations;
   mrpt::poses::CPose3D robot_pose;   ///< robot (base) in the fixed/odometry frame
   mrpt::poses::CPose3D sensor_pose;  ///< first range sensor in the fixed frame
+  /// The ground under the robot, set by a ground stage (valid = false until one ran).
+  GroundPlane ground;
+  /// One label per point of cloud(), or empty while no stage has removed anything (every point
+  /// Kept). A stage that removes points sizes it through labels(); later stages read isKept().
+  std::vector<PointLabel> point_labels;
   std::vector<Cluster> clusters;
+  /// Names of Cluster::features, set by the segmenter that made the clusters (shared, not copied
+  /// per frame); null when the clusters carry no features.
+  std::shared_ptr<const std::vector<std::string>> cluster_feature_names;
   std::vector<Detection> detections;
   std::vector<Track> tracks;
 
   /// Points of every range observation, in the robot frame, built on first use and cached, so a
   /// pipeline that needs no points (replay, import) never pays for them.
   const mrpt::maps::CSimplePointsMap& cloud() const;
+
+  /// point_labels, sized to cloud() with every point Kept on first use.
+  std::vector<PointLabel>& labels();
+  bool isKept(std::size_t i) const {
+    return point_labels.empty() || point_labels[i] == PointLabel::Kept;
+  }
+  /// Height of point i above the ground plane when one is known, else its robot-frame z (m).
+  double heightOf(std::size_t i) const;
 
  private:
   mutable std::shared_ptr<mrpt::maps::CSimplePointsMap> cloud_;

@@ -44,6 +44,19 @@ class DetectionsCsvWriter : public CsvStream {
   static const char* header();
 };
 
+/// Streams clusters.csv: one row per cluster per frame, `header()` then one column per feature
+/// named by the first frame with clusters (Frame::cluster_feature_names). Created, like
+/// detections.csv, on the first frame that has clusters.
+class ClustersCsvWriter : public CsvStream {
+ public:
+  ClustersCsvWriter(const std::string& path, const Frame& first);
+  void write(const Frame& frame);
+  static const char* header();
+
+ private:
+  std::vector<std::string> features_;
+};
+
 struct RunSummary {
   std::string pipeline;
   std::string input;

@@ -14,6 +14,8 @@ struct RunOptions {
   std::string out_dir;  ///< empty: no files written
   bool progress = true;
   long max_frames = -1;  ///< stop after this many frames (<0: all)
+  /// Write point_labels.bin (every point's label, each frame) when the pipeline has a segmenter.
+  bool point_labels = true;
 };
 
 class Pipeline {
@@ -25,6 +27,8 @@ class Pipeline {
   /// Outputs are complete for every frame processed before a failure.
   RunSummary run(const RunOptions& options);
   Sensor& source() { return *source_; }
+  /// The processing stages in run order (benchmarks drive them on cached frames).
+  std::vector<Stage*> stages() const;
 
   /// Set by SIGINT/SIGTERM handlers: the run stops after the current frame and writes outputs.
   static std::atomic<bool>& stopRequested();

@@ -28,11 +28,17 @@ DetectionCounts& DetectionCounts::operator+=(const DetectionCounts& o) {
   fn += o.fn;
   unscored_matches += o.unscored_matches;
   distance_sum += o.distance_sum;
+  for (const auto& [k, v] : o.by_range) {
+    by_range[k].first += v.first;
+    by_range[k].second += v.second;
+  }
   return *this;
 }
 
-DetectionCounts detectionPR(const std::vector<EvalFrame>& frames, double threshold) {
+DetectionCounts detectionPR(const std::vector<EvalFrame>& frames, double threshold,
+                            double range_bin) {
   DetectionCounts c;
+  c.range_bin = range_bin;
   for (const EvalFrame& f : frames) {
     ++c.frames;
     c.detections += f.estimates.size();
@@ -45,6 +51,11 @@ DetectionCounts detectionPR(const std::vector<EvalFrame>& frames, double thresho
       const bool scored = f.truths[i].scored;
       c.truth_points += scored;
       const int j = as.row_to_col[i];
+      const double range = f.truths[i].range;
+      if (scored && std::isfinite(range) && range_bin > 0) {
+        auto& bin = c.by_range[int(std::floor(range / range_bin))];
+        (j < 0 ? bin.second : bin.first) += 1;
+      }
       if (j < 0) {
         c.fn += scored;
       } else if (!scored) {

@@ -33,6 +33,7 @@ std::vector<TimedObjects> objectsByTime(const ObjectTable& table, CoordFrame fra
                                   : ": x/y not finite"));
       o.scored = isScored(*r, min_visible);
       o.row = r;
+      o.range = std::hypot(r->sensor_x, r->sensor_y);
       to.objects.push_back(o);
     }
     out.push_back(std::move(to));
@@ -57,6 +58,7 @@ std::vector<TimedObjects> legsByTime(const ObjectTable& truth, long min_visible,
         o.y = pts[k][1];
         o.scored = isScored(*r, min_visible);
         o.row = r;
+        o.range = std::hypot(r->sensor_x, r->sensor_y);
         to.objects.push_back(o);
       }
     }

@@ -115,6 +115,7 @@ void addObject(Scenario& s, const std::string& type, double x, double y, const P
                double x2, double y2, double radius, double height, double yaw, double width,
                double depth, double thickness, double crown) {
   auto h = [&](double def) { return height > 0 ? height : def; };
+  const int owner = objectOwner(++s.object_count);
   if (type == "wall") {
     // Split long walls into ≤1 m boxes so ray culling stays tight.
     const double len = std::hypot(x2 - x, y2 - y);
@@ -124,22 +125,21 @@ void addObject(Scenario& s, const std::string& type, double x, double y, const P
     for (int i = 0; i < n; ++i) {
       const double u = (i + 0.5) / n;
       s.objects.push_back(Primitive::box(x + u * (x2 - x), y + u * (y2 - y), a, 0.5 * len / n,
-                                         0.5 * thickness, 0, h(2.5), kOwnerStatic));
+                                         0.5 * thickness, 0, h(2.5), owner));
     }
   } else if (type == "pole") {
     const double r = radius > 0 ? radius : 0.05;
-    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(2.5), kOwnerStatic));
+    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(2.5), owner));
   } else if (type == "bin") {
     const double r = radius > 0 ? radius : 0.25;
-    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(0.9), kOwnerStatic));
+    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(0.9), owner));
   } else if (type == "box") {
-    s.objects.push_back(
-        Primitive::box(x, y, yaw, 0.5 * width, 0.5 * depth, 0, h(0.8), kOwnerStatic));
+    s.objects.push_back(Primitive::box(x, y, yaw, 0.5 * width, 0.5 * depth, 0, h(0.8), owner));
   } else if (type == "tree") {
     const double r = radius > 0 ? radius : 0.15, top = h(5.0);
     const double cr = std::min(crown, 0.5 * top);
-    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, top - cr, kOwnerStatic));
-    if (cr > 0) s.objects.push_back(Primitive::sphere({x, y, top - cr}, cr, kOwnerStatic));
+    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, top - cr, owner));
+    if (cr > 0) s.objects.push_back(Primitive::sphere({x, y, top - cr}, cr, owner));
   }
 }
 

@@ -169,13 +169,20 @@ ObservationMaker::ObservationMaker(const SensorSpec& spec) : spec_(spec) {}
 
 mrpt::obs::CObservation::Ptr ObservationMaker::make(const RangeImage& img, double t,
                                                     std::mt19937_64& rng,
-                                                    std::vector<int>& counts) const {
-  return spec_.is3d ? makeVelodyne(img, t, rng, counts) : make2D(img, t, rng, counts);
+                                                    ReturnTruth& truth) const {
+  truth.owners.clear();
+  return spec_.is3d ? makeVelodyne(img, t, rng, truth) : make2D(img, t, rng, truth);
+}
+
+// One return produced on `owner`: counted for its person and listed in cloud order.
+static void recordReturn(int owner, ReturnTruth& truth) {
+  if (owner > 0 && owner < int(truth.per_person.size())) ++truth.per_person[owner];
+  truth.owners.push_back(owner);
 }
 
 mrpt::obs::CObservation::Ptr ObservationMaker::make2D(const RangeImage& img, double t,
                                                       std::mt19937_64& rng,
-                                                      std::vector<int>& counts) const {
+                                                      ReturnTruth& truth) const {
   auto scan = mrpt::obs::CObservation2DRangeScan::Create();
   scan->sensorLabel = spec_.label;
   scan->timestamp = mrpt::Clock::fromDouble(t);
@@ -199,14 +206,14 @@ mrpt::obs::CObservation::Ptr ObservationMaker::make2D(const RangeImage& img, dou
     }
     scan->setScanRange(c, ok ? static_cast<float>(r) : scan->maxRange);
     scan->setScanRangeValidity(c, ok);
-    if (ok && img.owner[c] >= 0 && img.owner[c] < int(counts.size())) ++counts[img.owner[c]];
+    if (ok) recordReturn(img.owner[c], truth);
   }
   return scan;
 }
 
 mrpt::obs::CObservation::Ptr ObservationMaker::makeVelodyne(const RangeImage& img, double t,
                                                             std::mt19937_64& rng,
-                                                            std::vector<int>& counts) const {
+                                                            ReturnTruth& truth) const {
   auto obs = Velo::Create();
   obs->sensorLabel = spec_.label;
   obs->timestamp = mrpt::Clock::fromDouble(t);
@@ -216,6 +223,7 @@ mrpt::obs::CObservation::Ptr ObservationMaker::makeVelodyne(const RangeImage& im
   obs->minRange = spec_.min_range;
   obs->maxRange = spec_.max_range;
   obs->calibration = vlp16Calibration();
+  const auto& calib = obs->calibration;
   std::normal_distribution<double> noise(0, spec_.range_noise);
   std::uniform_real_distribution<double> u01(0, 1);
 
@@ -243,11 +251,15 @@ mrpt::obs::CObservation::Ptr ObservationMaker::makeVelodyne(const RangeImage& im
         if (r >= spec_.min_range && r <= spec_.max_range && drop >= spec_.dropout) {
           r += n;
           const long u = std::lround(r / Velo::DISTANCE_RESOLUTION);
-          if (u > 0 && u < 65535 && r >= spec_.min_range && r <= spec_.max_range) {
+          // Encode only what the decoder keeps (its range check, after the calibration's
+          // distance correction), so the truth lists exactly the decoded points.
+          const double decoded =
+              u * Velo::DISTANCE_RESOLUTION + calib.laser_corrections[laser].distanceCorrection;
+          if (u > 0 && u < 65535 && decoded >= spec_.min_range && decoded <= spec_.max_range) {
             units = static_cast<uint16_t>(u);
             const int owner = img.owner[i];
-            intensity = owner == kOwnerGround ? 15 : owner == kOwnerStatic ? 90 : 40;
-            if (owner >= 0 && owner < int(counts.size())) ++counts[owner];
+            intensity = owner == kOwnerGround ? 15 : owner < 0 ? 90 : 40;
+            recordReturn(owner, truth);
           }
         }
         std::memcpy(out, &units, 2);

@@ -7,7 +7,26 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pedtrack/sim/clearance.h"
+
 namespace pedtrack::sim {
+namespace {
+
+// The world's ground plane z = gx·x + gy·y seen from the robot: n_r = Rᵀ n_w, d_r = n_w · t.
+GroundPlane groundInRobotFrame(const Ground& g, const mrpt::poses::CPose3D& robot) {
+  const Eigen::Vector3d nw = Eigen::Vector3d(-g.gx, -g.gy, 1.0).normalized();
+  const Eigen::Matrix3d R = robot.getRotationMatrix().asEigen();
+  const Eigen::Vector3d nr = R.transpose() * nw;
+  GroundPlane p;
+  p.valid = true;
+  p.nx = nr.x();
+  p.ny = nr.y();
+  p.nz = nr.z();
+  p.d = nw.dot(Eigen::Vector3d(robot.x(), robot.y(), robot.z()));
+  return p;
+}
+
+}  // namespace
 
 Simulator::Simulator(Scenario scenario)
     : s_(std::move(scenario)), rays_(s_.sensor), caster_(rays_), maker_(s_.sensor), rng_(s_.seed) {
@@ -94,17 +113,31 @@ bool Simulator::next(SimFrame& f) {
   }
 
   caster_.cast(f.sensor_true, {&s_.objects, &people_}, s_.ground, s_.sensor.max_range, image_);
-  std::vector<int> counts(s_.people.size() + 1, 0);
+  ReturnTruth returns;
+  returns.per_person.assign(s_.people.size() + 1, 0);
   auto odo = mrpt::obs::CObservationOdometry::Create();
   odo->sensorLabel = "ODOMETRY";
   odo->timestamp = mrpt::Clock::fromDouble(f.t);
   odo->odometry = mrpt::poses::CPose2D(odometry_);
   f.observations.push_back(odo);
-  f.observations.push_back(maker_.make(image_, f.t, rng_, counts));
-  for (auto& r : rows) r.visible_points = counts[r.id];
+  f.observations.push_back(maker_.make(image_, f.t, rng_, returns));
+  for (auto& r : rows) r.visible_points = returns.per_person[r.id];
   f.truth = std::move(rows);
+  f.point_truth = std::move(returns.owners);
+  f.clearance = personClearance(image_, rays_, kClearanceCap);
+  f.ground = groundInRobotFrame(s_.ground, f.robot_true);
   ++k_;
   return true;
+}
+
+LabelFrame pointTruth(const SimFrame& f) {
+  LabelFrame out;
+  out.index = f.index;
+  out.t = f.t;
+  out.plane = f.ground;
+  out.labels = f.point_truth;
+  out.people = f.clearance;
+  return out;
 }
 
 const char* TruthCsvWriter::header() {

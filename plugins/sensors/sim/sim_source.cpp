@@ -17,7 +17,13 @@ class SimSource : public Sensor {
       : sim_(sim::loadScenario(ctx.params.getString("scenario"), ctx.params.getInt("seed"))),
         realtime_(ctx.params.getString("rate") == "realtime"),
         truth_key_(ctx.params.getString("truth")),
+        point_truth_(ctx.params.getBool("point_truth")),
         where_(ctx.params.where("truth")) {}
+
+  void finish() override {
+    if (truth_) truth_->close();
+    if (point_truth_out_) point_truth_out_->close();
+  }
 
   void start(const std::string& out_dir) override {
     // auto: next to the run's tracks.csv; none: nowhere; anything else: that path.
@@ -27,10 +33,15 @@ class SimSource : public Sensor {
     std::error_code ec;
     if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty())
       std::filesystem::create_directories(dir, ec);
+    // Per-point truth goes next to truth.csv.
+    const std::string points =
+        (std::filesystem::path(path).parent_path() / "truth_points.bin").string();
     try {
       truth_ = std::make_unique<sim::TruthCsvWriter>(path);
+      if (point_truth_)
+        point_truth_out_ = std::make_unique<LabelFileWriter>(points, LabelKind::Truth);
     } catch (const DataError&) {
-      throw ConfigError(where_ + ": cannot write '" + path + "'");
+      throw ConfigError(where_ + ": cannot write '" + (truth_ ? points : path) + "'");
     }
   }
 
@@ -43,6 +54,7 @@ class SimSource : public Sensor {
     frame.observations.push_back(f.observations.back());
     frame.sensor_pose = f.robot_odometry + sim_.scenario().sensor.mount;
     if (truth_) truth_->write(f);
+    if (point_truth_out_) point_truth_out_->write(sim::pointTruth(f));
     done_ = f.index + 1;
     if (realtime_) pacer_.wait(frame.t);
     return true;
@@ -56,7 +68,9 @@ class SimSource : public Sensor {
   sim::Simulator sim_;
   bool realtime_;
   std::string truth_key_, where_;
+  bool point_truth_;
   std::unique_ptr<sim::TruthCsvWriter> truth_;
+  std::unique_ptr<LabelFileWriter> point_truth_out_;
   std::size_t done_ = 0;
   ReplayPacer pacer_;
 };
@@ -73,6 +87,9 @@ PluginDescriptor describe() {
                         "max: as fast as the pipeline runs; realtime: at the sensor's rate"),
       ParamSpec::text("truth", std::string("auto"),
                       "ground truth CSV: auto = truth.csv in the run's --out, none, or a path"),
+      ParamSpec::boolean(
+          "point_truth", true,
+          "also write truth_points.bin (what each return hit) next to the truth CSV"),
   };
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<SimSource>(ctx);

@@ -1,6 +1,7 @@
 #pragma once
 // What every evaluation metric walks: frames holding truths and estimates (tracks or
 // detections) as planar points, aligned by time.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ struct Object {
   /// --min-visible). Such a truth may absorb an estimate but is never a miss.
   bool scored = true;
   const ObjectRow* row = nullptr;  ///< the source row (optional columns), null when none
+  /// Truths: distance from the sensor (m; a leg's is its person's), NaN when unknown.
+  double range = std::nan("");
 };
 
 struct EvalFrame {

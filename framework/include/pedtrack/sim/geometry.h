@@ -15,13 +15,17 @@ enum class Shape {
   Box                ///< vertical; half sizes `ru` along `yaw`, `rv` across; z in [z0, z1]
 };
 
-/// Who a returned point belongs to: a person id (>= 1), a static object, or the ground.
-constexpr int kOwnerGround = -1;
-constexpr int kOwnerStatic = 0;
+/// Who a returned point belongs to, encoded as the truth labels of point_labels.h: the ground
+/// (0), a person (its id, >= 1) or a static object (minus its id, objects being numbered from 1
+/// in the order the scenario declares them).
+constexpr int kOwnerGround = 0;
+inline int objectOwner(int object_id) {
+  return -object_id;
+}
 
 struct Primitive {
   Shape shape = Shape::Sphere;
-  int owner = kOwnerStatic;
+  int owner = kOwnerGround;
   Eigen::Vector3d a = Eigen::Vector3d::Zero();  ///< centre (cylinder/box: x, y of the axis)
   Eigen::Vector3d b = Eigen::Vector3d::Zero();  ///< capsule end
   double ru = 0, rv = 0;

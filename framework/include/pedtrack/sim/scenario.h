@@ -38,6 +38,7 @@ struct Scenario {
   Ground ground;
   std::vector<PersonSpec> people;
   std::vector<Primitive> objects;  ///< static scene
+  int object_count = 0;            ///< objects (ids 1..object_count; a wall is one object)
 };
 
 /// Loads and validates a scenario. `seed_override` >= 0 replaces [scenario] seed. Throws

@@ -5,6 +5,7 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
@@ -38,7 +39,7 @@ SensorSpec sensorDefaults(const std::string& model);
 struct RangeImage {
   int rings = 0, cols = 0;
   std::vector<double> range;  ///< m, +inf for no return
-  std::vector<int> owner;     ///< person id, kOwnerStatic or kOwnerGround
+  std::vector<int> owner;     ///< who each ray hit (geometry.h: ground, person or object)
   void reset(int r, int c);
 };
 
@@ -63,19 +64,28 @@ class RayTable {
   std::vector<double> elev_;
 };
 
+/// What one made observation contains besides itself.
+struct ReturnTruth {
+  std::vector<int> per_person;  ///< returns produced on each person, indexed by person id
+  /// The owner of every return, in the order Frame::cloud() lists the observation's points (2D:
+  /// valid beams in beam order; VLP-16: packet, block, firing, laser, as the decoder reads them).
+  std::vector<std::int32_t> owners;
+};
+
 /// Turns a cast range image into the device's MRPT observation, adding range noise, dropout and
-/// the device's range quantisation. Counts per owner the returns actually produced.
+/// the device's range quantisation, and records who each return it produced belongs to.
 class ObservationMaker {
  public:
   explicit ObservationMaker(const SensorSpec& spec);
+  /// `truth.per_person` must be sized to the largest person id + 1; `owners` is filled.
   mrpt::obs::CObservation::Ptr make(const RangeImage& img, double t, std::mt19937_64& rng,
-                                    std::vector<int>& returns_per_owner) const;
+                                    ReturnTruth& truth) const;
 
  private:
   mrpt::obs::CObservation::Ptr make2D(const RangeImage& img, double t, std::mt19937_64& rng,
-                                      std::vector<int>& counts) const;
+                                      ReturnTruth& truth) const;
   mrpt::obs::CObservation::Ptr makeVelodyne(const RangeImage& img, double t, std::mt19937_64& rng,
-                                            std::vector<int>& counts) const;
+                                            ReturnTruth& truth) const;
   SensorSpec spec_;
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pedtrack/outputs.h"
+#include "pedtrack/point_labels.h"
 #include "pedtrack/sim/raycast.h"
 #include "pedtrack/sim/scenario.h"
 
@@ -34,6 +35,12 @@ struct SimFrame {
   mrpt::poses::CPose3D robot_true, robot_odometry, sensor_true;
   std::vector<mrpt::obs::CObservation::Ptr> observations;  ///< CObservationOdometry, then scan
   std::vector<TruthRow> truth;
+  /// Who each return of the scan hit, in Frame::cloud() order (point_labels.h truth labels).
+  std::vector<std::int32_t> point_truth;
+  /// The true ground plane in the robot frame (the robot's true pose).
+  GroundPlane ground;
+  /// Every person the scan hit, with its clearance from everything else hit (sim/clearance.h).
+  std::vector<PersonClearance> clearance;
 };
 
 class Simulator {
@@ -56,6 +63,9 @@ class Simulator {
   RangeImage image_;
   std::vector<Primitive> people_;  // this frame's posed bodies, reused
 };
+
+/// The per-point truth of a frame as a truth label record (truth_points.bin).
+LabelFrame pointTruth(const SimFrame& f);
 
 /// Streams truth.csv: `t,frame,id,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,height,
 /// visible_points,left_leg_x,left_leg_y,right_leg_x,right_leg_y,world_x,world_y`.

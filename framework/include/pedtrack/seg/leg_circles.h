@@ -1,0 +1,33 @@
+#pragma once
+// Leg detection in 2D scans (P3 §2.2, eq. 1): a circle of bounded radius fitted to each segment,
+// non-circular segments rejected, and legs paired into person candidates.
+#include <Eigen/Core>
+#include <vector>
+
+#include "pedtrack/fit/circle.h"
+
+namespace pedtrack::seg {
+
+struct LegParams {
+  double r_min = 0.03, r_max = 0.07;  ///< m, P3's radius bounds
+  double max_residual = 0.02;         ///< m, RMS distance of the points to the circle
+  int min_points = 3;                 ///< P3 ignores clusters of fewer points
+  /// Reject arcs whose circle centre is not farther from the sensor than their points (a leg's
+  /// visible side is convex toward the sensor); P3 has no such test.
+  bool require_convex = false;
+};
+
+struct Leg {
+  fit::Circle circle;
+  double residual = 0;  ///< RMS of the points' distances to the circle (m)
+};
+
+/// Fits P3 eq. 1 to one segment seen from (sx, sy) and accepts it as a leg when enough points
+/// fit closely (and, with require_convex, the arc faces the sensor).
+bool detectLeg(const fit::Points2& pts, double sx, double sy, const LegParams& p, Leg& out);
+
+/// Pairs legs into person candidates: repeatedly the closest two unpaired legs whose centres
+/// are at most `max_distance` apart. Returns each leg's partner index, -1 when unpaired.
+std::vector<int> pairLegs(const std::vector<Eigen::Vector2d>& centres, double max_distance);
+
+}  // namespace pedtrack::seg

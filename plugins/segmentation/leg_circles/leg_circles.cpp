@@ -1,0 +1,110 @@
+// `leg_circles`: P3 §2.2 leg detection. Each segment of a 2D segmenter (scan_segments) gets the
+// bounded circle fit of P3 eq. 1; circular ones become the frame's clusters (centre = the
+// circle's), with the segment's features plus `leg_radius` and `leg_residual`, and legs are
+// paired into person candidates (Cluster::pair).
+#include "pedtrack/seg/leg_circles.h"
+
+#include <algorithm>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/plugin.h"
+#include "pedtrack/seg/scan_segments.h"
+
+namespace pedtrack::legcircles {
+namespace {
+
+class LegCircles : public Segmenter {
+ public:
+  explicit LegCircles(const PluginContext& ctx)
+      : pair_distance_(ctx.params.getDouble("pair_distance")) {
+    p_.r_min = ctx.params.getDouble("min_radius");
+    p_.r_max = ctx.params.getDouble("max_radius");
+    p_.max_residual = ctx.params.getDouble("max_residual");
+    p_.min_points = int(ctx.params.getInt("min_points"));
+    p_.require_convex = ctx.params.getBool("require_convex");
+    if (p_.r_max < p_.r_min)
+      throw ConfigError("max_radius: " + ctx.params.getString("max_radius") +
+                        " is below min_radius " + ctx.params.getString("min_radius"));
+  }
+
+  void process(Frame& f) override {
+    const auto& c = f.cloud();
+    const auto& xs = c.getPointsBufferRef_x();
+    const auto& ys = c.getPointsBufferRef_y();
+    const std::vector<seg::ScanRun> runs = seg::scanRuns(f, false);
+    std::vector<Cluster> legs;
+    std::vector<Eigen::Vector2d> centres;
+    fit::Points2 pts;
+    for (Cluster& cl : f.clusters) {
+      if (cl.indices.empty()) continue;
+      // The scan the segment came from: the last run starting at or before its first point.
+      const std::uint32_t first = cl.indices.front();
+      auto run =
+          std::upper_bound(runs.begin(), runs.end(), first,
+                           [](std::uint32_t i, const seg::ScanRun& r) { return i < r.first; });
+      if (run == runs.begin()) continue;
+      --run;
+      pts.clear();
+      for (std::uint32_t i : cl.indices) pts.emplace_back(xs[i], ys[i]);
+      seg::Leg leg;
+      if (!seg::detectLeg(pts, run->sx, run->sy, p_, leg)) continue;
+      cl.cx = leg.circle.x;
+      cl.cy = leg.circle.y;
+      cl.features.push_back(leg.circle.r);
+      cl.features.push_back(leg.residual);
+      centres.emplace_back(leg.circle.x, leg.circle.y);
+      legs.push_back(std::move(cl));
+    }
+    const std::vector<int> partner = seg::pairLegs(centres, pair_distance_);
+    for (std::size_t i = 0; i < legs.size(); ++i) legs[i].pair = partner[i];
+    f.clusters = std::move(legs);
+    f.cluster_feature_names = names(f.cluster_feature_names);
+  }
+
+ private:
+  // The segmenter's feature names plus ours, made once per distinct list.
+  std::shared_ptr<const std::vector<std::string>> names(
+      const std::shared_ptr<const std::vector<std::string>>& upstream) {
+    if (upstream != upstream_ || !names_) {
+      upstream_ = upstream;
+      auto v = upstream ? *upstream : std::vector<std::string>();
+      v.push_back("leg_radius");
+      v.push_back("leg_residual");
+      names_ = std::make_shared<const std::vector<std::string>>(std::move(v));
+    }
+    return names_;
+  }
+
+  seg::LegParams p_;
+  double pair_distance_;
+  std::shared_ptr<const std::vector<std::string>> upstream_, names_;
+};
+
+PluginDescriptor describe() {
+  PluginDescriptor d;
+  d.category = Category::Segmenter;
+  d.doc = "Leg circles (P3 eq. 1) on 2D segments, paired into person candidates";
+  const seg::LegParams def;
+  d.params = {
+      ParamSpec::real("min_radius", def.r_min, "m", 0, 1, "smallest leg radius (P3: 0.03)"),
+      ParamSpec::real("max_radius", def.r_max, "m", 0.001, 1, "largest leg radius (P3: 0.07)"),
+      ParamSpec::real("max_residual", def.max_residual, "m", 0, 1,
+                      "segments whose points lie farther from the circle (RMS) are not legs"),
+      ParamSpec::integer("min_points", def.min_points, "", 3, 100000,
+                         "segments with fewer points are not legs (P3: 3)"),
+      ParamSpec::boolean("require_convex", def.require_convex,
+                         "reject arcs whose circle centre is nearer the sensor than their points "
+                         "(concave toward it); P3 has no such test"),
+      ParamSpec::real("pair_distance", 0.8, "m", 0, 10,
+                      "two legs whose centres are at most this far apart may pair into a person"),
+  };
+  d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
+    return std::make_unique<LegCircles>(ctx);
+  };
+  return d;
+}
+
+}  // namespace
+}  // namespace pedtrack::legcircles
+
+PEDTRACK_PLUGIN("leg_circles", pedtrack::legcircles::describe)

@@ -1,0 +1,108 @@
+// `scan_segments`: 2D scans split into segments where consecutive returns are farther apart
+// than a gap (P4 §2.1's range discontinuities), each segment a cluster with the features torso
+// and leg classifiers use, among them a direct least-squares ellipse fit and a circle fit.
+#include "pedtrack/seg/scan_segments.h"
+
+#include <cmath>
+
+#include "pedtrack/plugin.h"
+
+namespace pedtrack::scansegments {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+class ScanSegments : public Segmenter {
+ public:
+  explicit ScanSegments(const PluginContext& ctx)
+      : names_(std::make_shared<const std::vector<std::string>>(seg::segmentFeatureNames())) {
+    p_.gap = ctx.params.getDouble("gap");
+    p_.min_points = int(ctx.params.getInt("min_points"));
+    p_.adaptive_angle = ctx.params.getDouble("adaptive_angle") * kDeg;
+    p_.max_missing = int(ctx.params.getInt("max_missing"));
+  }
+
+  void process(Frame& f) override {
+    f.clusters.clear();
+    f.cluster_feature_names = names_;
+    const auto& c = f.cloud();
+    const auto& xs = c.getPointsBufferRef_x();
+    const auto& ys = c.getPointsBufferRef_y();
+    const auto& zs = c.getPointsBufferRef_z();
+    fit::Points2 pts;
+    for (const seg::ScanRun& run : seg::scanRuns(f, p_.max_missing >= 0)) {
+      auto range = [&](std::size_t i) {
+        const double dx = xs[i] - run.sx, dy = ys[i] - run.sy;
+        return std::sqrt(dx * dx + dy * dy);
+      };
+      const std::size_t end = run.first + run.count;
+      for (auto& segment : seg::splitRun(f, run, p_)) {
+        // The kept returns just outside the segment, for the jump features.
+        double jp = 0, jn = 0;
+        for (std::size_t i = segment.front(); i-- > run.first;)
+          if (f.isKept(i)) {
+            jp = range(i) - range(segment.front());
+            break;
+          }
+        for (std::size_t i = segment.back() + 1; i < end; ++i)
+          if (f.isKept(i)) {
+            jn = range(i) - range(segment.back());
+            break;
+          }
+        pts.clear();
+        Cluster cl;
+        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, sum[3] = {};
+        for (std::uint32_t i : segment) {
+          pts.emplace_back(xs[i], ys[i]);
+          const double p[3] = {xs[i], ys[i], zs[i]};
+          for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], p[a]);
+            hi[a] = std::max(hi[a], p[a]);
+            sum[a] += p[a];
+          }
+        }
+        const double n = double(segment.size());
+        cl.cx = sum[0] / n;
+        cl.cy = sum[1] / n;
+        cl.cz = sum[2] / n;
+        cl.size_x = hi[0] - lo[0];
+        cl.size_y = hi[1] - lo[1];
+        cl.size_z = hi[2] - lo[2];
+        cl.features = seg::segmentFeatures(pts, run.sx, run.sy, jp, jn);
+        cl.indices = std::move(segment);
+        f.clusters.push_back(std::move(cl));
+      }
+    }
+  }
+
+ private:
+  seg::SegmentParams p_;
+  std::shared_ptr<const std::vector<std::string>> names_;
+};
+
+PluginDescriptor describe() {
+  PluginDescriptor d;
+  d.category = Category::Segmenter;
+  d.doc = "2D scan segments (P4 s2.1) with torso/leg features, ellipse and circle fits";
+  d.params = {
+      ParamSpec::real("gap", 0.13, "m", 0.001, 10,
+                      "consecutive returns farther apart start a new segment"),
+      ParamSpec::integer("max_missing", 1, "", -1, 100000,
+                         ">= 0: more beams than this without a return between two returns also "
+                         "start a new segment (a discontinuity: those beams saw past both); -1: "
+                         "only the gap counts"),
+      ParamSpec::integer("min_points", 3, "", 1, 100000, "shorter segments are dropped"),
+      ParamSpec::real("adaptive_angle", 0, "deg", 0, 89,
+                      "> 0: the gap grows with range as an adaptive breakpoint detector "
+                      "(Borges & Aldon 2004) with this incidence angle; 0: a fixed gap"),
+  };
+  d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
+    return std::make_unique<ScanSegments>(ctx);
+  };
+  return d;
+}
+
+}  // namespace
+}  // namespace pedtrack::scansegments
+
+PEDTRACK_PLUGIN("scan_segments", pedtrack::scansegments::describe)
