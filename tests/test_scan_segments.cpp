@@ -1,0 +1,130 @@
+// 2D segmentation: gaps and missing beams split segments; segment features by hand; leg circles
+// and their pairing.
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/seg/leg_circles.h"
+#include "pedtrack/seg/scan_segments.h"
+
+using namespace pedtrack;
+
+namespace {
+
+// 11 beams, 1° apart from −5° to +5°: beams 0-3 at 2 m, beam 4 without return, 5-7 at 2 m,
+// 8-10 at 3 m.
+Frame frameWithScan() {
+  auto scan = mrpt::obs::CObservation2DRangeScan::Create();
+  scan->aperture = float(10 * M_PI / 180);
+  scan->rightToLeft = true;
+  scan->maxRange = 30;
+  scan->resizeScan(11);
+  for (int i = 0; i < 11; ++i) {
+    scan->setScanRange(i, i < 8 ? 2.f : 3.f);
+    scan->setScanRangeValidity(i, i != 4);
+  }
+  Frame f;
+  f.observations.push_back(scan);
+  return f;
+}
+
+std::vector<std::size_t> sizes(const std::vector<std::vector<std::uint32_t>>& segs) {
+  std::vector<std::size_t> s;
+  for (const auto& x : segs) s.push_back(x.size());
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("scan runs map cloud points to beams", "[segments]") {
+  const Frame f = frameWithScan();
+  REQUIRE(f.cloud().size() == 10);
+  const auto runs = seg::scanRuns(f);
+  REQUIRE(runs.size() == 1);
+  CHECK(runs[0].count == 10);
+  CHECK(runs[0].beam == std::vector<int>{0, 1, 2, 3, 5, 6, 7, 8, 9, 10});
+  CHECK(seg::scanRuns(f, false)[0].beam.empty());
+}
+
+TEST_CASE("segments split at gaps and at runs of missing beams", "[segments]") {
+  Frame f = frameWithScan();
+  const auto run = seg::scanRuns(f)[0];
+  seg::SegmentParams p;  // gap 0.13 m; consecutive beams at 2 m are 3.5 cm apart
+  p.max_missing = -1;
+  CHECK(sizes(seg::splitRun(f, run, p)) == std::vector<std::size_t>{7, 3});
+  p.max_missing = 1;  // one missing beam is a dropout
+  CHECK(sizes(seg::splitRun(f, run, p)) == std::vector<std::size_t>{7, 3});
+  p.max_missing = 0;  // any missing beam is a discontinuity
+  CHECK(sizes(seg::splitRun(f, run, p)) == std::vector<std::size_t>{4, 3, 3});
+  p.min_points = 4;
+  CHECK(sizes(seg::splitRun(f, run, p)) == std::vector<std::size_t>{4});
+  // Removed points take no part: without beams 0-1 the first segment is 2 points (dropped).
+  f.labels()[0] = f.labels()[1] = PointLabel::Removed;
+  p.min_points = 3;
+  CHECK(sizes(seg::splitRun(f, run, p)) == std::vector<std::size_t>{3, 3});
+}
+
+TEST_CASE("segment features of three points on a 3 m arc, by hand", "[segments]") {
+  // Points at 3°, 4° and 5° on a 3 m circle round the sensor: steps of 2·3·sin(0.5°), width
+  // 2·3·sin(1°), curvature 1/3, turning angle 180° − 1° at the middle point.
+  fit::Points2 pts;
+  for (int k = 3; k <= 5; ++k) {
+    const double a = k * M_PI / 180;
+    pts.emplace_back(3 * std::cos(a), 3 * std::sin(a));
+  }
+  const auto f = seg::segmentFeatures(pts, 0, 0, -1.0, 0.0);
+  const auto& names = seg::segmentFeatureNames();
+  REQUIRE(f.size() == names.size());
+  auto at = [&](const char* n) {
+    return f[std::find(names.begin(), names.end(), n) - names.begin()];
+  };
+  const double step = 2 * 3 * std::sin(0.5 * M_PI / 180);
+  CHECK(at("points") == 3);
+  CHECK(at("width") == Approx(2 * 3 * std::sin(M_PI / 180)));
+  CHECK(at("boundary_length") == Approx(2 * step));
+  CHECK(at("boundary_regularity") == Approx(0).margin(1e-9));
+  CHECK(at("radius") == Approx(3).epsilon(1e-6));  // the points lie on the sensor's 3 m circle
+  CHECK(at("circularity") == Approx(0).margin(1e-9));
+  CHECK(at("mean_curvature") == Approx(1.0 / 3).epsilon(1e-6));  // 1/r
+  CHECK(at("mean_angle_diff") == Approx(M_PI - M_PI / 180).epsilon(1e-9));
+  CHECK(at("jump_prev") == -1.0);
+  // The mean of the three points is 3·(e^{i3°} + e^{i4°} + e^{i5°})/3 = e^{i4°}(1 + 2 cos 1°).
+  CHECK(at("distance") == Approx(1 + 2 * std::cos(M_PI / 180)).epsilon(1e-12));
+}
+
+TEST_CASE("leg circles: a leg arc is found, a wall and a concave arc are not", "[legs]") {
+  // A 5 cm leg at (1.5, 0.2) seen from the origin: the half facing the sensor, 9 points.
+  fit::Points2 leg;
+  const double cx = 1.5, cy = 0.2, r = 0.05, toward = std::atan2(-cy, -cx);
+  for (int i = 0; i < 9; ++i) {
+    const double a = toward - M_PI / 2 + M_PI * i / 8;
+    leg.emplace_back(cx + r * std::cos(a), cy + r * std::sin(a));
+  }
+  seg::LegParams p;
+  seg::Leg out;
+  REQUIRE(seg::detectLeg(leg, 0, 0, p, out));
+  CHECK(out.circle.x == Approx(cx).margin(1e-9));
+  CHECK(out.circle.y == Approx(cy).margin(1e-9));
+  CHECK(out.circle.r == Approx(r).margin(1e-9));
+  // Too few points, and a 1 m wall: no leg.
+  CHECK_FALSE(seg::detectLeg({leg[0], leg[1]}, 0, 0, p, out));
+  fit::Points2 wall;
+  for (int i = 0; i < 30; ++i) wall.emplace_back(2.0, -0.5 + i / 29.0);
+  CHECK_FALSE(seg::detectLeg(wall, 0, 0, p, out));
+  // The same arc seen from behind is concave toward the sensor: P3 accepts it, the convexity
+  // test does not.
+  CHECK(seg::detectLeg(leg, 3.0, 0.4, p, out));
+  p.require_convex = true;
+  CHECK_FALSE(seg::detectLeg(leg, 3.0, 0.4, p, out));
+  CHECK(seg::detectLeg(leg, 0, 0, p, out));
+}
+
+TEST_CASE("legs pair closest first within the separation limit", "[legs]") {
+  CHECK(seg::pairLegs({{0, 0}, {0.3, 0}, {2, 0}, {2.5, 0}, {5, 0}}, 0.8) ==
+        std::vector<int>{1, 0, 3, 2, -1});
+  // 0.5 and 0.9 are the closest pair; 0 then has no partner left within 0.8 m.
+  CHECK(seg::pairLegs({{0, 0}, {0.5, 0}, {0.9, 0}}, 0.8) == std::vector<int>{-1, 2, 1});
+  CHECK(seg::pairLegs({}, 0.8).empty());
+}
