@@ -79,13 +79,10 @@ GroundPlane IrlsGround::update(const float* xs, const float* ys, const float* zs
                                const std::vector<PointLabel>* labels, double sx, double sy) {
   binLowest(xs, ys, zs, n, labels, sx, sy);
   if (!started_) {
-    default_ = levelPlane(p_.default_height);
-    if (p_.auto_height && !binned_.empty()) {
-      // The default plane holds when a fair share of the cells' lowest points lie near it.
-      std::size_t near = 0;
-      for (const auto& q : binned_) near += std::abs(default_.height(q.x(), q.y(), q.z())) < 0.2;
-      if (near * 5 < binned_.size()) default_ = levelPlane(findDefaultHeight());
-    }
+    // The ground is the lowest extensive surface: with auto_height its level in this first
+    // frame replaces the configured height (a log whose robot frame is the sensor's own).
+    default_ =
+        levelPlane(p_.auto_height && !binned_.empty() ? findDefaultHeight() : p_.default_height);
     prior_ = default_;
     started_ = true;
   }

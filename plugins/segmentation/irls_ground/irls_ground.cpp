@@ -80,8 +80,9 @@ PluginDescriptor describe() {
       ParamSpec::real("default_height", def.default_height, "m", -100, 100,
                       "robot-frame z of the default (level) ground plane"),
       ParamSpec::boolean("auto_height", def.auto_height,
-                         "at the first frame, if the default plane has no support, find the ground "
-                         "height from the data (lowest well-populated level)"),
+                         "take the default plane's height from the first frame (the lowest "
+                         "well-populated level of the cells' lowest points) instead of "
+                         "default_height"),
       ParamSpec::integer("iterations", def.iterations, "", 1, 1000,
                          "IRLS iterations per frame at most"),
       ParamSpec::real("tolerance", def.tolerance, "m", 0, 1,

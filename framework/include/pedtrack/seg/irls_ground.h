@@ -18,10 +18,12 @@ struct IrlsParams {
   int seed_rows = 5, seed_cols = 7;             ///< seed mesh on the default plane
   double seed_extent = 5.0;   ///< m, the mesh spans ±seed_extent around the sensor
   double default_height = 0;  ///< m, robot frame z of the default (level) plane
-  bool auto_height = true;    ///< find the default height from the data when it has no support
-  int iterations = 10;        ///< IRLS iterations per frame at most
-  double tolerance = 1e-4;    ///< stop when the plane moves less (normal and offset), m
-  double max_tilt = 0.35;     ///< rad: estimates tilted more from the default plane are refused
+  /// Take the default plane's height from the first frame (the lowest well-populated level of
+  /// the cells' lowest points) instead of default_height.
+  bool auto_height = true;
+  int iterations = 10;      ///< IRLS iterations per frame at most
+  double tolerance = 1e-4;  ///< stop when the plane moves less (normal and offset), m
+  double max_tilt = 0.35;   ///< rad: estimates tilted more from the default plane are refused
   /// > 0: after IRLS, refit by plain least squares to the data within this distance of the
   /// IRLS plane (m). Removes the pull of the weight floor D on off-plane points, which tilts
   /// P2's estimate toward obstacles; 0: P2 as published.

@@ -50,6 +50,8 @@ class Simulator {
   /// Produces the next frame; false after the last.
   bool next(SimFrame& out);
   const Scenario& scenario() const { return s_; }
+  /// The bodies of the people present in the last frame, posed as the rays met them (tests).
+  const std::vector<Primitive>& posedPeople() const { return people_; }
 
  private:
   Scenario s_;
