@@ -27,7 +27,10 @@ int runCommand(const std::vector<std::string>& args) {
       "replay this .rawlog or .bag instead of the pipeline's source")(
       "topic", po::value(&ov.topic), "bag topic(s) to replay with --input (comma list)")(
       "set", po::value(&ov.sets)->composing(), "override a key: section.key=value (repeatable)")(
-      "out", po::value(&run.out_dir), "directory for tracks.csv and run.json")(
+      "out", po::value(&run.out_dir),
+      "directory for tracks.csv, run.json and the stages' side outputs (detections.csv, "
+      "clusters.csv, point_labels.bin)")(
+      "no-point-labels", "with --out: do not write point_labels.bin (every point's label)")(
       "plugin-path", po::value(&plugin_path)->composing(),
       "extra plugin directory (repeatable, searched first)")(
       "max-frames", po::value(&run.max_frames)->default_value(-1), "stop after N frames (-1: all)")(
@@ -37,6 +40,7 @@ int runCommand(const std::vector<std::string>& args) {
   po::variables_map vm;
   if (!parseOptions("run", "PIPELINE.ini [options]", opts, pos, args, vm)) return 0;
   run.progress = !vm.count("quiet");
+  run.point_labels = !vm.count("no-point-labels");
 
   PluginRegistry registry(PluginRegistry::defaultSearchPath(plugin_path));
   const PipelineConfig config = PipelineConfig::load(pipeline_file, ov, registry);

@@ -1,5 +1,7 @@
 // The host program as a user meets it: listings, bad input, a real run.
 #include <catch2/catch.hpp>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "test_support.h"
@@ -26,6 +28,22 @@ TEST_CASE("plugins lists every plugin with category and doc, and one plugin's pa
   const auto bad = runHost({"plugins", "rawlgo"});
   CHECK(bad.exit_code == 2);
   CHECK_THAT(bad.output, Catch::Contains("did you mean 'rawlog'?"));
+}
+
+TEST_CASE("docs/plugins.md is what `pedtrack plugins --markdown` writes now", "[cli][docs]") {
+#ifndef PEDTRACK_WITH_ROSBAG
+  std::printf("SKIPPED: this build has no rosbag plugin; docs/plugins.md lists it\n");
+  std::exit(77);
+#endif
+  const std::string dir = freshDir("cli_docs");
+  // Only this build's plugins: no extra directories from the environment.
+  const auto r = runShell("env -u PEDTRACK_PLUGIN_PATH '" + std::string(PEDTRACK_BIN) +
+                          "' plugins --markdown '" + dir + "/plugins.md'");
+  REQUIRE(r.exit_code == 0);
+  const std::string fresh = readFile(dir + "/plugins.md");
+  CHECK_THAT(fresh, Catch::Contains("## voxel_ccl") && Catch::Contains("| `voxel` | double | m |"));
+  INFO("docs/plugins.md is stale: run  build/bin/pedtrack plugins --markdown docs/plugins.md");
+  CHECK(readFile(std::string(PEDTRACK_SOURCE_DIR) + "/docs/plugins.md") == fresh);
 }
 
 TEST_CASE("bad pipelines exit 2 with one line and write nothing", "[cli]") {

@@ -1,9 +1,14 @@
-// Output contract: tracks.csv rows, run.json fields, stage statistics.
+// Output contract: tracks.csv, detections.csv and clusters.csv rows, run labels, run.json fields,
+// stage statistics.
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <sstream>
 
 #include "pedtrack/object_table.h"
 #include "pedtrack/outputs.h"
+#include "pedtrack/point_labels.h"
 #include "test_support.h"
 
 using namespace pedtrack;
@@ -121,4 +126,96 @@ TEST_CASE("run.json carries frame counts and per-stage timing", "[outputs]") {
   CHECK(jsonNumber(j, "mean_ms") == Approx(3));
   CHECK(jsonNumber(j, "p99_ms") == Approx(4));
   CHECK(j.find("\"name\": \"source\", \"plugin\": \"rawlog\", \"calls\": 2") != std::string::npos);
+}
+
+TEST_CASE("clusters.csv: both frames, extent, pair and a column per named feature", "[outputs]") {
+  const std::string dir = freshDir("outputs_clusters");
+  Frame f;
+  f.index = 4;
+  f.t = 1700000000.25;
+  f.robot_pose = mrpt::poses::CPose3D(10, 0, 0, M_PI / 2, 0, 0);
+  f.sensor_pose = f.robot_pose + mrpt::poses::CPose3D(0, 0, 1, 0, 0, 0);
+  f.cluster_feature_names =
+      std::make_shared<const std::vector<std::string>>(std::vector<std::string>{"h", "w"});
+  Cluster a;
+  a.indices = {0, 1, 2};
+  a.cx = 2;  // 2 m ahead of the robot, which faces +y: fixed (10, 2)
+  a.cz = 0.9;
+  a.size_x = 0.4;
+  a.size_y = 0.3;
+  a.size_z = 1.7;
+  a.features = {1.75, 0.5};
+  a.pair = 1;
+  Cluster b;
+  b.indices = {3};
+  b.cy = -1;
+  f.clusters = {a, b};
+  {
+    ClustersCsvWriter w(dir + "/clusters.csv", f);
+    w.write(f);
+    // A later frame naming its features in another order: matched by name.
+    f.cluster_feature_names =
+        std::make_shared<const std::vector<std::string>>(std::vector<std::string>{"w", "other"});
+    f.clusters = {a};
+    w.write(f);
+  }
+  const auto rows = lines(readFile(dir + "/clusters.csv"));
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0] == "t,frame,cluster,points,x,y,z,sensor_x,sensor_y,size_x,size_y,size_z,pair,h,w");
+  auto fields = [](const std::string& row) {
+    std::vector<std::string> v;
+    std::stringstream s(row);
+    for (std::string x; std::getline(s, x, ',');) v.push_back(x);
+    if (!row.empty() && row.back() == ',') v.push_back("");
+    return v;
+  };
+  auto num = [](const std::string& x) { return std::stod(x); };
+  const auto r1 = fields(rows[1]), r2 = fields(rows[2]), r3 = fields(rows[3]);
+  REQUIRE(r1.size() == 15);
+  CHECK(r1[0] == "1700000000.250000");
+  CHECK(r1[1] == "4");
+  CHECK(r1[3] == "3");
+  CHECK(num(r1[4]) == Approx(10).margin(1e-4));  // fixed frame
+  CHECK(num(r1[5]) == Approx(2).margin(1e-4));
+  CHECK(num(r1[6]) == Approx(0.9));             // robot-frame z
+  CHECK(num(r1[7]) == Approx(2).margin(1e-4));  // sensor frame: 2 m ahead
+  CHECK(num(r1[8]) == Approx(0).margin(1e-4));
+  CHECK(r1[9] == "0.400");
+  CHECK(r1[11] == "1.700");
+  CHECK(r1[12] == "1");
+  CHECK(r1[13] == "1.75");
+  CHECK(r1[14] == "0.5");
+  CHECK(num(r2[4]) == Approx(11).margin(1e-4));  // 1 m to the robot's right: +x
+  CHECK(num(r2[8]) == Approx(-1).margin(1e-4));
+  CHECK(r2[12] == "-1");
+  CHECK(r2[13].empty());
+  CHECK(r2[14].empty());
+  CHECK(r3[13].empty());    // h: not named by the later frame
+  CHECK(r3[14] == "1.75");  // w: that frame's first value
+  // The detections reader reads it too (eval --detections clusters.csv).
+  CHECK(readDetectionTable(dir + "/clusters.csv").rows.size() == 3);
+}
+
+TEST_CASE("run labels: ground and removed points, then each cluster's index", "[outputs]") {
+  Frame f;
+  auto scan = mrpt::obs::CObservation2DRangeScan::Create();
+  scan->aperture = 1;
+  scan->resizeScan(6);
+  for (int i = 0; i < 6; ++i) {
+    scan->setScanRange(i, 2);
+    scan->setScanRangeValidity(i, true);
+  }
+  f.observations.push_back(scan);
+  CHECK(runLabels(f).labels == std::vector<std::int32_t>(6, run_label::kUnclustered));
+  f.labels()[0] = PointLabel::Ground;
+  f.labels()[1] = PointLabel::Removed;
+  Cluster c;
+  c.indices = {3, 4};
+  f.clusters = {Cluster(), c};
+  f.ground.valid = true;
+  const LabelFrame l = runLabels(f);
+  CHECK(l.labels == std::vector<std::int32_t>{run_label::kGround, run_label::kRemoved,
+                                              run_label::kUnclustered, 1, 1,
+                                              run_label::kUnclustered});
+  CHECK(l.plane.valid);
 }

@@ -7,12 +7,16 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "pedtrack/point_labels.h"
 #include "render/palette.h"
 #include "render/view.h"
 #include "test_support.h"
 
 using namespace pedtrack::test;
 using namespace pedtrack::render;
+using pedtrack::LabelFileWriter;
+using pedtrack::LabelFrame;
+using pedtrack::LabelKind;
 namespace fs = std::filesystem;
 
 namespace {
@@ -316,4 +320,58 @@ TEST_CASE("torso ellipses put alpha across the heading and beta along it", "[ren
   CHECK(truthNear(3, -1.0) > 0);
   CHECK(truthNear(3.3, 0) > 0);
   CHECK(truthNear(4.0, 0) == 0);
+}
+
+TEST_CASE("point labels colour clusters, ground and removed points; truth labels each person",
+          "[render][labels]") {
+  const Fixture fx("labels");
+  const auto frames = readAllFrames(
+      "[pipeline]\nstages = source\n[source]\nplugin = rawlog\nfile = " + kSena + "\n");
+  const std::size_t n = frames[kFrame].cloud().size();
+  REQUIRE(n > 100);
+  // Frame 10: the first third removed, the second third cluster 5, the rest unclustered; and a
+  // truth file calling the first half person 4, the rest objects.
+  const std::string run = fx.dir + "/point_labels.bin", truth = fx.dir + "/truth_points.bin";
+  {
+    LabelFileWriter r(run, LabelKind::Run), t(truth, LabelKind::Truth);
+    LabelFrame rf, tf;
+    rf.index = tf.index = kFrame;
+    for (std::size_t i = 0; i < n; ++i) {
+      rf.labels.push_back(i < n / 3       ? pedtrack::run_label::kRemoved
+                          : i < 2 * n / 3 ? 5
+                                          : pedtrack::run_label::kUnclustered);
+      tf.labels.push_back(i < n / 2 ? 4 : -2);
+    }
+    r.write(rf);
+    t.write(tf);
+  }
+  const std::string out = fx.dir + "/run.png", out_truth = fx.dir + "/truth.png";
+  auto args = [&](const std::string& labels, const std::string& png) {
+    return std::vector<std::string>{
+        "render",   "--rawlog", kSena,     "--frame", std::to_string(kFrame),
+        "--labels", labels,     "--range", "40",      "--out",
+        png,        "-q"};
+  };
+  REQUIRE(runHost(args(run, out)).exit_code == 0);
+  const cv::Mat img = cv::imread(out, cv::IMREAD_COLOR);
+  CHECK(countColor(img, clusterColor(5)) > 50);
+  CHECK(countColor(img, colors::kRemoved) > 50);
+  CHECK(countColor(img, colors::kPoint) > 50);
+  REQUIRE(runHost(args(truth, out_truth)).exit_code == 0);
+  const cv::Mat t = cv::imread(out_truth, cv::IMREAD_COLOR);
+  CHECK(countColor(t, clusterColor(4)) > 50);
+  CHECK(countColor(t, colors::kPoint) > 50);
+  CHECK(countColor(t, colors::kRemoved) == 0);
+  // --run DIR takes the labels (and tracks) from a run's folder.
+  const std::string out_run = fx.dir + "/from_run.png";
+  REQUIRE(runHost({"render", "--rawlog", kSena, "--run", fx.dir, "--frame", std::to_string(kFrame),
+                   "--out", out_run, "--range", "40", "-q"})
+              .exit_code == 0);
+  CHECK(countColor(cv::imread(out_run, cv::IMREAD_COLOR), clusterColor(5)) > 50);
+  // A label file that is not one: one line, exit 2.
+  writeFile(fx.dir + "/bad.bin", "garbage");
+  const auto bad = runHost({"render", "--rawlog", kSena, "--labels", fx.dir + "/bad.bin", "--out",
+                            fx.dir + "/x.png", "-q"});
+  CHECK(bad.exit_code == 2);
+  CHECK(lines(bad.output).size() == 1);
 }

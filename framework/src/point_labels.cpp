@@ -87,10 +87,11 @@ LabelFileReader::LabelFileReader(const std::string& path) : path_(path) {
   gzFile f = gzopen(path.c_str(), "rb");
   if (!f) throw ConfigError(path + ": cannot open");
   gz_ = f;
-  char magic[8] = {};
+  char header[12] = {};  // magic, then the kind
   std::uint32_t kind = 0;
-  if (!get(magic, sizeof magic, true) || std::memcmp(magic, kMagic, sizeof magic) != 0 ||
-      !get(&kind, sizeof kind, true) || (kind != 1 && kind != 2))
+  const bool whole = gzread(f, header, sizeof header) == int(sizeof header);
+  std::memcpy(&kind, header + 8, sizeof kind);
+  if (!whole || std::memcmp(header, kMagic, sizeof kMagic) != 0 || (kind != 1 && kind != 2))
     throw ConfigError(path +
                       ": not a pedtrack point label file (truth_points.bin or "
                       "point_labels.bin)");

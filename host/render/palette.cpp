@@ -37,9 +37,10 @@ cv::Scalar clusterColor(long id) {
       std::fmod(static_cast<double>(static_cast<unsigned long>(id) % 100003) * 0.6180339887, 1.0);
   double hue = u * 260.0;
   if (hue >= 50) hue += 100;
-  // HSV (S 0.6, V 1) to BGR.
+  // HSV (S 0.6, V 1) to BGR, in whole units: the colour drawn is exactly the colour returned.
   const double s = 0.6, h6 = hue / 60.0, f = h6 - std::floor(h6);
-  const double p = 255 * (1 - s), q = 255 * (1 - s * f), t = 255 * (1 - s * (1 - f));
+  const double p = std::round(255 * (1 - s)), q = std::round(255 * (1 - s * f)),
+               t = std::round(255 * (1 - s * (1 - f)));
   switch (static_cast<int>(h6) % 6) {
     case 0:
       return {p, t, 255};
