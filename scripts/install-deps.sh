@@ -2,10 +2,11 @@
 # Installs the Debian bookworm packages pedtrack builds and tests with (only those missing).
 set -euo pipefail
 packages=(
-  cmake g++ make ccache pkg-config clang-format
+  cmake g++ make ccache pkg-config clang-format zlib1g-dev
   libmrpt-dev mrpt-apps mrpt-common            # MRPT 2.5: observations, config, drivers, rawlog-edit, sample datasets
   libboost-filesystem-dev libboost-program-options-dev
   catch2
+  coinor-libipopt-dev                          # Ipopt: the reference solver of the circle-fit test
   libopencv-dev                                # pedtrack render: drawing, PNG, MP4 (FFmpeg backend)
   librosbag-storage-dev libmrpt-ros1bridge-dev  # ROS1 bag replay
   libtf2-dev libtf2-msgs-dev libsensor-msgs-dev libnav-msgs-dev

@@ -51,7 +51,7 @@ struct PersonClearance {
   std::int32_t id = 0;
   float clearance = 0;  ///< m, 3D, between the true surfaces hit; at most kClearanceCap
 };
-constexpr double kClearanceCap = 2.0;
+constexpr double kClearanceCap = 1.0;
 
 struct LabelFrame {
   std::uint64_t index = 0;

@@ -44,9 +44,17 @@ std::vector<PersonClearance> personClearance(const RangeImage& img, const RayTab
                near.end());
     for (const Hit& h : others)
       if (inside(h.p)) near.push_back(&h.p);
+    // Sorted by x, each of the person's hits scans only the others within the best distance so
+    // far along x.
+    std::sort(near.begin(), near.end(),
+              [](const Eigen::Vector3d* a, const Eigen::Vector3d* b) { return a->x() < b->x(); });
     double best2 = cap * cap;
-    for (const Eigen::Vector3d* a : mine)
-      for (const Eigen::Vector3d* o : near) best2 = std::min(best2, (*a - *o).squaredNorm());
+    for (const Eigen::Vector3d* a : mine) {
+      auto it = std::lower_bound(near.begin(), near.end(), a->x() - std::sqrt(best2),
+                                 [](const Eigen::Vector3d* p, double x) { return p->x() < x; });
+      for (; it != near.end() && (*it)->x() <= a->x() + std::sqrt(best2); ++it)
+        best2 = std::min(best2, (*a - **it).squaredNorm());
+    }
     out.push_back({id, static_cast<float>(std::sqrt(best2))});
   }
   return out;
