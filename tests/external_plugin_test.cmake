@@ -1,7 +1,7 @@
 # Installs this build to a temporary prefix, builds tests/external_plugin against it with
 # find_package(pedtrack), runs the plugin through the installed `pedtrack run --plugin-path`, and
 # checks that a plugin of another API version is refused naming both versions.
-# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, DATASET.
+# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, DATASET, API_VERSION.
 function(run_checked)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -37,7 +37,7 @@ endif()
 file(WRITE ${WORK_DIR}/other.ini "[pipeline]\nstages = source other\n[source]\nplugin = rawlog\nfile = ${DATASET}\n[other]\nplugin = other_api\n")
 execute_process(COMMAND ${pedtrack} run ${WORK_DIR}/other.ini --plugin-path ${WORK_DIR}/build --out ${WORK_DIR}/out2
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 2 OR NOT err MATCHES "API version 0, but this pedtrack has API version 2" OR EXISTS ${WORK_DIR}/out2)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "API version 0, but this pedtrack has API version ${API_VERSION}" OR EXISTS ${WORK_DIR}/out2)
   message(FATAL_ERROR "a plugin of another API version was not refused properly (${rc}):\n${err}")
 endif()
 message(STATUS "external plugin: ${err}")
