@@ -63,6 +63,7 @@ int simCommand(const std::vector<std::string>& args) {
   if (out.empty()) throw ConfigError("pedtrack sim: missing --out DIR");
 
   sim::Simulator simulator(sim::loadScenario(scenario, seed));
+  simulator.setPointTruth(!vm.count("no-point-truth"));
   std::filesystem::create_directories(out);
   const std::string rawlog = out + "/sim.rawlog", truth = out + "/truth.csv",
                     points = out + "/truth_points.bin";

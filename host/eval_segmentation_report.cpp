@@ -138,6 +138,7 @@ std::string segmentationJson(const eval::SegmentationReport& r,
       .num("plane_angle_p95_deg", a.p95)
       .num("plane_angle_max_deg", a.max)
       .num("plane_offset_mean_m", d.mean)
+      .num("plane_offset_p95_m", d.p95)
       .num("plane_offset_max_m", d.max)
       .raw("people", countsJson(r.all, r.per_person))
       .raw("isolated", countsJson(r.isolated, r.per_person_isolated));

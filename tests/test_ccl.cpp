@@ -23,13 +23,16 @@ int count(const std::vector<Voxel>& v, Connectivity c, std::vector<int>* comp = 
   return n;
 }
 
-// Independent reference: breadth-first search over the occupied set.
-int bfsComponents(const std::vector<Voxel>& v, Connectivity c) {
+// Independent reference: breadth-first search over the occupied set, components numbered by
+// their lowest voxel (std::set visits voxels in (x, y, z) order), each point's component.
+std::vector<int> bfsComponents(const std::vector<Voxel>& v, Connectivity c) {
   std::set<Voxel> occupied(v.begin(), v.end()), seen;
+  std::map<Voxel, int> comp;
   int n = 0;
   for (const Voxel& s : occupied) {
     if (seen.count(s)) continue;
     ++n;
+    comp[s] = n - 1;
     std::queue<Voxel> q;
     q.push(s);
     seen.insert(s);
@@ -46,12 +49,15 @@ int bfsComponents(const std::vector<Voxel>& v, Connectivity c) {
             const Voxel b = {a[0] + dx, a[1] + dy, a[2] + dz};
             if (occupied.count(b) && !seen.count(b)) {
               seen.insert(b);
+              comp[b] = n - 1;
               q.push(b);
             }
           }
     }
   }
-  return n;
+  std::vector<int> out;
+  for (const Voxel& p : v) out.push_back(comp[p]);
+  return out;
 }
 
 }  // namespace
@@ -73,10 +79,10 @@ TEST_CASE("CCL on a hand-made grid: components, numbering and each point's label
   // A: an L of three voxels joined by faces; B: two voxels touching A's end only at a corner;
   // C: an isolated voxel far away; D: two voxels joined by an edge. Points repeat voxels.
   const std::vector<Voxel> v = {
-      {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 0},  // A (points 0-3)
-      {2, 2, 1}, {3, 2, 1},                        // B (4-5): corner to A's (1, 1, 0)
-      {10, 10, 10},                                // C (6)
-      {5, 0, 0}, {6, 1, 0},                        // D (7-8): edge neighbours
+      {0, 0, 0},    {1, 0, 0}, {1, 1, 0}, {1, 1, 0},  // A (points 0-3)
+      {2, 2, 1},    {3, 2, 1},                        // B (4-5): corner to A's (1, 1, 0)
+      {10, 10, 10},                                   // C (6)
+      {5, 0, 0},    {6, 1, 0},                        // D (7-8): edge neighbours
   };
   std::vector<int> comp;
   CHECK(count(v, Connectivity::Six, &comp) == 5);  // A, B, C, D split in two
@@ -90,15 +96,19 @@ TEST_CASE("CCL on a hand-made grid: components, numbering and each point's label
   CHECK(count({{-500000, 3, -7}, {-499999, 4, -6}, {400000, 0, 0}}, Connectivity::TwentySix) == 2);
 }
 
-TEST_CASE("CCL matches a breadth-first search on random grids", "[ccl]") {
+TEST_CASE("CCL labels every point as a breadth-first search does, on random grids", "[ccl]") {
   std::mt19937 rng(8);
   for (int trial = 0; trial < 60; ++trial) {
     std::uniform_int_distribution<int> c(-6, 6);
     std::vector<Voxel> v;
     const int n = 20 + trial * 5;
     for (int i = 0; i < n; ++i) v.push_back({c(rng), c(rng), c(rng) / 2});
-    for (auto conn : {Connectivity::Six, Connectivity::Eighteen, Connectivity::TwentySix})
-      CHECK(count(v, conn) == bfsComponents(v, conn));
+    for (auto conn : {Connectivity::Six, Connectivity::Eighteen, Connectivity::TwentySix}) {
+      std::vector<int> comp;
+      const std::vector<int> bfs = bfsComponents(v, conn);
+      CHECK(count(v, conn, &comp) == *std::max_element(bfs.begin(), bfs.end()) + 1);
+      CHECK(comp == bfs);
+    }
   }
 }
 

@@ -1,10 +1,9 @@
 // Shape fits: the algebraic and P3-bounded circle (the bounded one checked against Ipopt solving
 // P3 eq. 1 directly), the direct ellipse fit (checked against OpenCV's), the weighted plane.
-#include <coin/IpIpoptApplication.hpp>
-#include <coin/IpTNLP.hpp>
-
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <coin/IpIpoptApplication.hpp>
+#include <coin/IpTNLP.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
 
@@ -36,8 +35,8 @@ class P3Circle : public Ipopt::TNLP {
   Circle result;
   double cost = INFINITY;
 
-  bool get_nlp_info(Ipopt::Index& n, Ipopt::Index& m, Ipopt::Index& nnz_jac,
-                    Ipopt::Index& nnz_h, IndexStyleEnum& style) override {
+  bool get_nlp_info(Ipopt::Index& n, Ipopt::Index& m, Ipopt::Index& nnz_jac, Ipopt::Index& nnz_h,
+                    IndexStyleEnum& style) override {
     n = 3;
     m = 0;
     nnz_jac = 0;
@@ -213,11 +212,12 @@ TEST_CASE("P3 bounded circle equals Ipopt's solution of P3 eq. 1 (or beats it)",
     const Points2 pts = arc(3 * u(rng), 3 * u(rng), r, a0, a0 + span, n, 0.015 * u(rng), rng);
     Circle ours, kasa;
     REQUIRE(fit::fitCircleBounded(pts, 0.03, 0.07, ours));
-    std::vector<Circle> starts = {ours, {pts[n / 2].x(), pts[n / 2].y(), 0.05}};
+    // Ipopt starts from the middle point, the algebraic fit and random circles: never from ours.
+    std::vector<Circle> starts = {{pts[n / 2].x(), pts[n / 2].y(), 0.05}};
     if (fit::fitCircleAlgebraic(pts, kasa)) starts.push_back(kasa);
     for (int k = 0; k < 4; ++k)  // around the points, radii across the bounds
-      starts.push_back({pts[n / 2].x() + 0.2 * (u(rng) - 0.5), pts[n / 2].y() + 0.2 * (u(rng) - 0.5),
-                        0.03 + 0.04 * u(rng)});
+      starts.push_back({pts[n / 2].x() + 0.2 * (u(rng) - 0.5),
+                        pts[n / 2].y() + 0.2 * (u(rng) - 0.5), 0.03 + 0.04 * u(rng)});
     double ipopt_cost = 0;
     const Circle ip = ipoptBest(pts, 0.03, 0.07, starts, ipopt_cost);
     const double our_cost = p3Cost(pts, ours.x, ours.y, ours.r);
@@ -228,17 +228,30 @@ TEST_CASE("P3 bounded circle equals Ipopt's solution of P3 eq. 1 (or beats it)",
       CHECK(std::hypot(ours.x - ip.x, ours.y - ip.y) < 1e-5);
       CHECK(ours.r == Approx(ip.r).margin(1e-6));
     } else {
-      ++better;  // Ipopt ended in another local minimum (it pushes starts off the bounds)
+      ++better;  // every Ipopt start ended in another local minimum
     }
     on_bound += ours.r == 0.03 || ours.r == 0.07;
   }
-  // Ipopt (given our answer as one of its starts) mostly confirms it, and never finds lower.
+  // Ipopt, started elsewhere, finds our answer in most trials and never anything lower.
   CHECK(compared + better == 300);
-  CHECK(compared >= 255);
-  CHECK(on_bound > 50);    // the bounds were active in many trials
+  CHECK(compared >= 240);
+  CHECK(on_bound > 50);  // the bounds were active in many trials
 }
 
-TEST_CASE("P3 bounded circle: collinear points get the largest circle", "[fit][circle]") {
+TEST_CASE("P3 bounded circle: collinear points, uneven too, get the largest circle",
+          "[fit][circle]") {
+  // Uneven spacing on y = 2: the best r_max circle, checked against a dense search over its
+  // centre (x, y) on the r = 0.07 surface.
+  const Points2 line = {{0, 2}, {0.01, 2}, {0.025, 2}, {0.05, 2}, {0.09, 2}};
+  Circle u;
+  REQUIRE(fit::fitCircleBounded(line, 0.03, 0.07, u));
+  CHECK(u.r == 0.07);
+  const double ours = p3Cost(line, u.x, u.y, u.r);
+  double best = INFINITY;
+  for (double x = -0.1; x <= 0.2; x += 0.0005)
+    for (double y = 1.9; y <= 2.1; y += 0.0005) best = std::min(best, p3Cost(line, x, y, 0.07));
+  CHECK(ours <= best + 1e-12);
+  CHECK(ours >= best * 0.98);
   Circle c;
   REQUIRE(fit::fitCircleBounded({{0, 0}, {0.02, 0}, {0.04, 0}, {0.06, 0}}, 0.03, 0.07, c));
   CHECK(c.r == 0.07);
@@ -295,6 +308,10 @@ TEST_CASE("direct ellipse fit agrees with OpenCV's cv::fitEllipseDirect", "[fit]
     CHECK(e.y == Approx(r.center.y).margin(2e-3 * ca));
     CHECK(e.a == Approx(ca).epsilon(2e-3));
     CHECK(e.b == Approx(cb).epsilon(2e-3));
+    // OpenCV's angle is of its `width` axis, in degrees: the major axis is that or 90° off.
+    const double cv_major = (r.size.width >= r.size.height ? r.angle : r.angle + 90) * M_PI / 180;
+    if (ca - cb > 0.02)  // a clear major axis
+      CHECK(std::abs(std::remainder(e.angle - cv_major, M_PI)) < 0.01);
   }
   CHECK(checked > 190);
 }

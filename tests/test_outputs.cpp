@@ -177,7 +177,7 @@ TEST_CASE("clusters.csv: both frames, extent, pair and a column per named featur
   CHECK(r1[3] == "3");
   CHECK(num(r1[4]) == Approx(10).margin(1e-4));  // fixed frame
   CHECK(num(r1[5]) == Approx(2).margin(1e-4));
-  CHECK(num(r1[6]) == Approx(0.9));             // robot-frame z
+  CHECK(num(r1[6]) == Approx(0.9));             // fixed-frame z (the robot is at z = 0)
   CHECK(num(r1[7]) == Approx(2).margin(1e-4));  // sensor frame: 2 m ahead
   CHECK(num(r1[8]) == Approx(0).margin(1e-4));
   CHECK(r1[9] == "0.400");

@@ -28,8 +28,11 @@ const mrpt::maps::CSimplePointsMap& Frame::cloud() const {
   map->insertionOptions.minDistBetweenLaserPoints = 0;
   map->insertionOptions.also_interpolate = false;
   map->insertionOptions.isPlanarMap = false;
-  for (const auto& obs : observations) {
+  auto spans = std::make_shared<std::vector<CloudSpan>>();
+  for (std::size_t k = 0; k < observations.size(); ++k) {
+    const auto& obs = observations[k];
     if (!obs || !isRangeObservation(*obs)) continue;
+    const std::size_t before = map->size();
     auto velo = std::dynamic_pointer_cast<mrpt::obs::CObservationVelodyneScan>(obs);
     if (velo && velo->calibration.laser_corrections.size() == 16) {
       // Both firings of every VLP-16 block (see velodyne_decode.h), mounted on the robot; MRPT
@@ -39,13 +42,20 @@ const mrpt::maps::CSimplePointsMap& Frame::cloud() const {
         velo->sensorPose.composePoint(p.x, p.y, p.z, x, y, z);
         map->insertPointFast(x, y, z);
       }
-      continue;
+    } else {
+      map->insertObservation(*obs);
     }
-    map->insertObservation(*obs);
+    spans->push_back({k, before, map->size() - before});
   }
   map->mark_as_modified();
+  spans_ = std::move(spans);
   cloud_ = std::move(map);
   return *cloud_;
+}
+
+const std::vector<CloudSpan>& Frame::cloudSpans() const {
+  cloud();
+  return *spans_;
 }
 
 std::vector<PointLabel>& Frame::labels() {

@@ -1,5 +1,6 @@
 #include "pedtrack/outputs.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
@@ -19,6 +20,11 @@ static double monotonicSeconds() {
 static void toSensorFrame(const Frame& f, double x, double y, double& sx, double& sy) {
   double sz = 0;
   f.sensor_pose.inverseComposePoint(x, y, f.sensor_pose.z(), sx, sy, sz);
+}
+
+// snprintf's count, clamped to what fits the buffer (an absurd value must not read past it).
+static void writeClamped(std::ofstream& out, const char* buf, int n, std::size_t size) {
+  if (n > 0) out.write(buf, std::min<std::streamsize>(n, std::streamsize(size) - 1));
 }
 
 // Rows reach the disk at least once a second, so an interrupted run keeps what it produced.
@@ -60,29 +66,29 @@ void TracksCsvWriter::write(const Frame& f) {
     toSensorFrame(f, tr.x, tr.y, sx, sy);
     int n = std::snprintf(buf, sizeof buf, "%.6f,%zu,%ld,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,", f.t,
                           f.index, tr.id, tr.x, tr.y, sx, sy, tr.yaw, tr.vx, tr.vy);
-    out_.write(buf, n);
+    writeClamped(out_, buf, n, sizeof buf);
     if (tr.has_shape) {
       n = std::snprintf(buf, sizeof buf, "%.4f,%.4f,", tr.alpha, tr.beta);
-      out_.write(buf, n);
+      writeClamped(out_, buf, n, sizeof buf);
     } else {
       out_ << ",,";
     }
     if (tr.has_cov) {
       n = std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,", tr.cov_xx, tr.cov_xy, tr.cov_yy);
-      out_.write(buf, n);
+      writeClamped(out_, buf, n, sizeof buf);
     } else {
       out_ << ",,,";
     }
     n = std::snprintf(buf, sizeof buf, "%.4f,", tr.score);
-    out_.write(buf, n);
+    writeClamped(out_, buf, n, sizeof buf);
     for (std::size_t i = 0; i < tr.model_probs.size(); ++i) {
       n = std::snprintf(buf, sizeof buf, "%s%.4f", i ? ";" : "", tr.model_probs[i]);
-      out_.write(buf, n);
+      writeClamped(out_, buf, n, sizeof buf);
     }
     out_ << ',' << tr.status << ',';
     if (std::isfinite(tr.nis)) {
       n = std::snprintf(buf, sizeof buf, "%.6g", tr.nis);
-      out_.write(buf, n);
+      writeClamped(out_, buf, n, sizeof buf);
     }
     out_ << '\n';
   }
@@ -100,11 +106,11 @@ void DetectionsCsvWriter::write(const Frame& f) {
     toSensorFrame(f, d.x, d.y, sx, sy);
     int n = std::snprintf(buf, sizeof buf, "%.6f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,", f.t, f.index, d.x,
                           d.y, sx, sy, d.score);
-    out_.write(buf, n);
+    writeClamped(out_, buf, n, sizeof buf);
     // Detection marks an unknown shape with alpha = beta = 0; its yaw then means nothing either.
     if (d.alpha > 0 || d.beta > 0) {
       n = std::snprintf(buf, sizeof buf, "%.5f,%.4f,%.4f\n", d.yaw, d.alpha, d.beta);
-      out_.write(buf, n);
+      writeClamped(out_, buf, n, sizeof buf);
     } else {
       out_ << ",,\n";
     }
@@ -131,27 +137,32 @@ ClustersCsvWriter::ClustersCsvWriter(const std::string& path, const Frame& first
 
 void ClustersCsvWriter::write(const Frame& f) {
   char buf[512];
-  // A later frame's features go under the header's names (by name, empty where absent).
+  // A later frame's features go under the header's names (by name, empty where absent); the
+  // mapping is made again only when the frame's list of names is another one.
   const std::vector<std::string>* names = f.cluster_feature_names.get();
-  std::vector<int> column(features_.size(), -1);
-  for (std::size_t k = 0; k < features_.size(); ++k)
-    if (names)
-      for (std::size_t j = 0; j < names->size(); ++j)
-        if ((*names)[j] == features_[k]) column[k] = int(j);
+  if (!mapped_ || names != mapped_names_) {
+    column_.assign(features_.size(), -1);
+    for (std::size_t k = 0; k < features_.size(); ++k)
+      if (names)
+        for (std::size_t j = 0; j < names->size(); ++j)
+          if ((*names)[j] == features_[k]) column_[k] = int(j);
+    mapped_names_ = names;
+    mapped_ = true;
+  }
+  const std::vector<int>& column = column_;
   for (std::size_t c = 0; c < f.clusters.size(); ++c) {
     const Cluster& cl = f.clusters[c];
     double x = 0, y = 0, z = 0, sx = 0, sy = 0;
     f.robot_pose.composePoint(cl.cx, cl.cy, cl.cz, x, y, z);
     toSensorFrame(f, x, y, sx, sy);
-    int n = std::snprintf(buf, sizeof buf,
-                          "%.6f,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%d", f.t,
-                          f.index, c, cl.indices.size(), x, y, cl.cz, sx, sy, cl.size_x, cl.size_y,
-                          cl.size_z, cl.pair);
-    out_.write(buf, n);
+    int n = std::snprintf(
+        buf, sizeof buf, "%.6f,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%d", f.t,
+        f.index, c, cl.indices.size(), x, y, z, sx, sy, cl.size_x, cl.size_y, cl.size_z, cl.pair);
+    writeClamped(out_, buf, n, sizeof buf);
     for (int j : column) {
       if (j >= 0 && j < int(cl.features.size())) {
         n = std::snprintf(buf, sizeof buf, ",%.6g", cl.features[j]);
-        out_.write(buf, n);
+        writeClamped(out_, buf, n, sizeof buf);
       } else {
         out_ << ',';
       }

@@ -150,15 +150,25 @@ RunSummary Pipeline::run(const RunOptions& opt) {
     progress.update(sum.frames_read, source_->progress());
   }
   if (stopRequested() && sum.status == "ok") sum.status = "interrupted";
-  for (auto& s : stages_) s->finish();
-  source_->finish();
+  try {  // a plugin that cannot complete its side outputs fails the run, after the rest is out
+    for (auto& s : stages_) s->finish();
+    source_->finish();
+  } catch (const std::exception& e) {
+    sum.status = "error";
+    sum.error = e.what();
+  }
   sum.entries_skipped = source_->entriesSkipped();
   sum.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   progress.done(sum.frames_read);
   if (csv) csv->close();
   if (detections_csv) detections_csv->close();
   if (clusters_csv) clusters_csv->close();
-  if (labels) labels->close();
+  try {
+    if (labels) labels->close();
+  } catch (const std::exception& e) {
+    sum.status = "error";
+    sum.error = e.what();
+  }
   if (!opt.out_dir.empty()) writeRunJson(opt.out_dir + "/run.json", sum);
   return sum;
 }

@@ -47,7 +47,10 @@ LabelFileWriter::LabelFileWriter(const std::string& path, LabelKind kind) : path
 }
 
 LabelFileWriter::~LabelFileWriter() {
-  close();
+  try {
+    close();
+  } catch (const std::exception&) {  // a destructor must not throw; close() reports it
+  }
 }
 
 void LabelFileWriter::put(const void* data, unsigned bytes) {
@@ -79,8 +82,10 @@ void LabelFileWriter::write(const LabelFrame& f) {
 }
 
 void LabelFileWriter::close() {
-  if (gz_) gzclose(static_cast<gzFile>(gz_));
+  if (!gz_) return;
+  const int rc = gzclose(static_cast<gzFile>(gz_));
   gz_ = nullptr;
+  if (rc != Z_OK) throw DataError(path_ + ": writing failed when closing (disk full?)");
 }
 
 LabelFileReader::LabelFileReader(const std::string& path) : path_(path) {

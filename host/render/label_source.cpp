@@ -13,8 +13,12 @@ const LabelFrame* LabelSource::at(std::size_t index, std::size_t points) {
     have_ = ended_ = false;
   }
   while (!ended_ && (!have_ || current_.index < index)) {
-    have_ = reader_->next(current_);
-    ended_ = !have_;
+    if (reader_->next(next_)) {
+      std::swap(current_, next_);
+      have_ = true;
+    } else {
+      ended_ = true;  // current_ keeps the last frame
+    }
   }
   if (!have_ || current_.index != index || current_.labels.size() != points) return nullptr;
   return &current_;

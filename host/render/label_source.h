@@ -21,7 +21,7 @@ class LabelSource {
   std::string path_;
   LabelKind kind_;
   std::unique_ptr<LabelFileReader> reader_;
-  LabelFrame current_;
+  LabelFrame current_, next_;  // the last frame read (kept at the end of the file), a buffer
   bool have_ = false, ended_ = false;
 };
 

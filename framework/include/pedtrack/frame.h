@@ -71,6 +71,13 @@ struct Track {
   double nis = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// The points one observation contributed to Frame::cloud().
+struct CloudSpan {
+  std::size_t observation = 0;  ///< index into Frame::observations
+  std::size_t first = 0;        ///< cloud index of its first point
+  std::size_t count = 0;        ///< its points
+};
+
 struct Frame {
   std::size_t index = 0;  ///< 0-based position in the stream
   double t = 0;           ///< observation timestamp, UNIX seconds
@@ -92,6 +99,10 @@ struct Frame {
   /// Points of every range observation, in the robot frame, built on first use and cached, so a
   /// pipeline that needs no points (replay, import) never pays for them.
   const mrpt::maps::CSimplePointsMap& cloud() const;
+  /// Which cloud points came from which observation, in cloud order (built with the cloud).
+  const std::vector<CloudSpan>& cloudSpans() const;
+  /// The (first) sensor's mounting pose on the robot: sensor_pose relative to robot_pose.
+  mrpt::poses::CPose3D sensorMount() const { return sensor_pose - robot_pose; }
 
   /// point_labels, sized to cloud() with every point Kept on first use.
   std::vector<PointLabel>& labels();
@@ -103,6 +114,7 @@ struct Frame {
 
  private:
   mutable std::shared_ptr<mrpt::maps::CSimplePointsMap> cloud_;
+  mutable std::shared_ptr<std::vector<CloudSpan>> spans_;
 };
 
 /// True for the observation types a frame is built around (2D scans, Velodyne and rotating

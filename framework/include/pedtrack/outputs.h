@@ -55,6 +55,9 @@ class ClustersCsvWriter : public CsvStream {
 
  private:
   std::vector<std::string> features_;
+  std::vector<int> column_;  // feature k of the header is value column_[k] of the frame's list
+  const std::vector<std::string>* mapped_names_ = nullptr;
+  bool mapped_ = false;
 };
 
 struct RunSummary {

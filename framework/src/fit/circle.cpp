@@ -15,8 +15,9 @@
 // (eigenvalues s₁ ≤ s₂, ũ = Vᵀ·2Σ p̃ᵢbᵢ, B = Σbᵢ),
 //     φ(μ) = g(z(μ)) − R² = Σₖ ũₖ² / (4sₖ + μ)² + (B − μ/2)/n − R²,   μ > −4s₁,
 // which is strictly decreasing (φ' < 0), so its one root is found by bisection plus Newton.
-// The "hard case" (ũ₁ = 0, so φ stays below 0 up to the pole) puts μ = −4s₁ and completes the
-// centre along s₁'s eigenvector. tests/test_fit.cpp checks the result against Ipopt.
+// The "hard case" (ũ₁ = 0, so φ stays below 0 up to the pole; collinear points among others)
+// puts μ = −4s₁ and completes the centre along s₁'s eigenvector. tests/test_fit.cpp checks the
+// result against Ipopt.
 #include "pedtrack/fit/circle.h"
 
 #include <Eigen/Eigenvalues>
@@ -33,6 +34,12 @@ struct Centred {
   Eigen::Vector2d u;  // Vᵀ · 2 Σ p̃ b
   double B = 0, n = 0;
 };
+
+// Collinear points (s₁ ≈ 0) have no scatter across their line, and ũ₁ is 0 in exact arithmetic:
+// it is set to 0 so that the pole at μ = 0 is the hard case instead of 0/0.
+bool collinear(const Centred& c) {
+  return !(c.s(0) > 1e-12 * c.s(1));
+}
 
 Centred centre(const Points2& pts) {
   Centred c;
@@ -53,78 +60,93 @@ Centred centre(const Points2& pts) {
   c.s = es.eigenvalues();
   c.V = es.eigenvectors();
   c.u = c.V.transpose() * u;
+  if (collinear(c)) {
+    c.s(0) = 0;
+    c.u(0) = 0;
+  }
   return c;
+}
+
+// ũₖ / (4sₖ + μ), 0 for a component without data (ũₖ = 0), also at its pole.
+double part(const Centred& c, int k, double mu) {
+  return c.u(k) == 0 ? 0 : c.u(k) / (4 * c.s(k) + mu);
 }
 
 // z(μ): the centre (centred coordinates) and c = r² − |centre|².
 void solve(const Centred& c, double mu, Eigen::Vector2d& centre_out, double& cc) {
-  const Eigen::Vector2d w(c.u(0) / (4 * c.s(0) + mu), c.u(1) / (4 * c.s(1) + mu));
-  centre_out = c.V * w;
+  centre_out = c.V * Eigen::Vector2d(part(c, 0, mu), part(c, 1, mu));
   cc = (c.B - 0.5 * mu) / c.n;
 }
 
 double phi(const Centred& c, double mu, double R2) {
-  const double a = c.u(0) / (4 * c.s(0) + mu), b = c.u(1) / (4 * c.s(1) + mu);
+  const double a = part(c, 0, mu), b = part(c, 1, mu);
   return a * a + b * b + (c.B - 0.5 * mu) / c.n - R2;
 }
 
 double dphi(const Centred& c, double mu) {
-  const double d0 = 4 * c.s(0) + mu, d1 = 4 * c.s(1) + mu;
-  return -2 * c.u(0) * c.u(0) / (d0 * d0 * d0) - 2 * c.u(1) * c.u(1) / (d1 * d1 * d1) - 0.5 / c.n;
+  double d = -0.5 / c.n;
+  for (int k = 0; k < 2; ++k) {
+    const double p = part(c, k, mu);
+    d -= 2 * p * p / (4 * c.s(k) + mu);
+  }
+  return d;
 }
 
-// The minimum of f on the surface r = R.
+// The algebraic fit: z(0), when the points are not collinear.
+bool algebraic(const Centred& c, Circle& out) {
+  if (collinear(c)) return false;
+  Eigen::Vector2d ctr;
+  double cc = 0;
+  solve(c, 0, ctr, cc);
+  const double r2 = ctr.squaredNorm() + cc;
+  if (!(r2 > 0)) return false;
+  out = {c.mean.x() + ctr.x(), c.mean.y() + ctr.y(), std::sqrt(r2)};
+  return true;
+}
+
+// The minimum of f on the surface r = R: the root of the decreasing φ on (pole, ∞), or the hard
+// case at the pole when φ stays below zero there.
 Circle onRadius(const Centred& c, double R) {
   const double R2 = R * R;
   const double pole = -4 * c.s(0);
   const double scale = 4 * c.s(1) + c.n + c.B + R2;  // a size for brackets and tolerances
-  // Bracket the root of the decreasing φ on (pole, ∞).
-  double lo = pole, hi;
-  if (phi(c, 0, R2) > 0) {
-    lo = 0;
-    hi = std::max(1.0, scale);
-    while (phi(c, hi, R2) > 0) hi *= 2;
-  } else {
+  // φ just right of the pole: +∞ when ũ₁ ≠ 0, else its finite limit.
+  const double at_pole = c.u(0) == 0 ? phi(c, pole, R2) : INFINITY;
+  if (!(at_pole > 0)) {
+    // Hard case: μ = −4s₁, centre = the second component's part + τ·v₁ with g = R².
+    const double b = part(c, 1, pole);
+    const double cc = (c.B - 0.5 * pole) / c.n;
+    const double tau = std::sqrt(std::max(0.0, R2 - cc - b * b));
+    const Eigen::Vector2d ctr = c.V * Eigen::Vector2d(tau, b);
+    return {c.mean.x() + ctr.x(), c.mean.y() + ctr.y(), R};
+  }
+  // Bracket the root: from 0 upward when φ(0) > 0, else between the pole and 0.
+  double lo, hi;
+  if (pole < 0 && !(phi(c, 0, R2) > 0)) {
     hi = 0;
-    // Approach the pole; if φ never turns positive this is the hard case.
-    double step = std::max(std::abs(pole), 1e-12 * scale);
-    bool found = false;
-    for (int k = 0; k < 60; ++k) {
-      step *= 0.5;
-      const double m = pole + step;
-      if (m >= hi) continue;
-      if (phi(c, m, R2) > 0) {
-        lo = m;
-        found = true;
+    lo = pole;
+    for (double step = -pole; step > 1e-300; step *= 0.5) {  // toward the pole
+      if (phi(c, pole + step, R2) > 0) {
+        lo = pole + step;
         break;
       }
-      hi = m;
+      hi = pole + step;
     }
-    if (!found) {
-      // Hard case: μ = −4s₁, centre = particular part + τ·v₁ with g = R².
-      const double mu = pole;
-      const double b = c.u(1) / (4 * c.s(1) + mu);
-      const double cc = (c.B - 0.5 * mu) / c.n;
-      const double tau2 = std::max(0.0, R2 - cc - b * b);
-      const Eigen::Vector2d ctr = c.V * Eigen::Vector2d(std::sqrt(tau2), b);
-      return {c.mean.x() + ctr.x(), c.mean.y() + ctr.y(), R};
-    }
+  } else {
+    lo = std::max(pole, 0.0);
+    hi = std::max(1.0, scale);
+    while (phi(c, hi, R2) > 0) hi *= 2;
   }
   // Safeguarded Newton inside the bracket.
   double mu = 0.5 * (lo + hi);
   for (int it = 0; it < 100; ++it) {
     const double f = phi(c, mu, R2);
-    if (f > 0)
-      lo = mu;
-    else
-      hi = mu;
+    (f > 0 ? lo : hi) = mu;
     double next = mu - f / dphi(c, mu);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - mu) <= 1e-14 * std::max(1.0, std::abs(mu))) {
-      mu = next;
-      break;
-    }
+    const bool done = std::abs(next - mu) <= 1e-14 * std::max(1.0, std::abs(mu));
     mu = next;
+    if (done) break;
   }
   Eigen::Vector2d ctr;
   double cc = 0;
@@ -135,16 +157,7 @@ Circle onRadius(const Centred& c, double R) {
 }  // namespace
 
 bool fitCircleAlgebraic(const Points2& pts, Circle& out) {
-  if (pts.size() < 3) return false;
-  const Centred c = centre(pts);
-  if (!(c.s(0) > 1e-12 * std::max(c.s(1), 1e-300))) return false;  // collinear
-  Eigen::Vector2d ctr;
-  double cc = 0;
-  solve(c, 0, ctr, cc);
-  const double r2 = ctr.squaredNorm() + cc;
-  if (!(r2 > 0)) return false;
-  out = {c.mean.x() + ctr.x(), c.mean.y() + ctr.y(), std::sqrt(r2)};
-  return true;
+  return pts.size() >= 3 && algebraic(centre(pts), out);
 }
 
 bool fitCircleBounded(const Points2& pts, double r_min, double r_max, Circle& out) {
@@ -152,13 +165,13 @@ bool fitCircleBounded(const Points2& pts, double r_min, double r_max, Circle& ou
   const Centred c = centre(pts);
   if (!(c.s(1) > 0)) return false;  // every point the same
   Circle free;
-  const bool ok = c.s(0) > 1e-12 * c.s(1) && fitCircleAlgebraic(pts, free);
+  const bool ok = algebraic(c, free);
   if (ok && free.r >= r_min && free.r <= r_max) {
     out = free;
     return true;
   }
-  // Collinear points have no algebraic circle; the cost falls toward larger radii, so the
-  // minimum is on the r_max surface (φ(0) > 0 there as the pole sits at 0).
+  // Collinear points have no algebraic circle; the cost falls toward larger radii, so their
+  // minimum is on the r_max surface.
   const double R = ok && free.r < r_min ? r_min : r_max;
   out = onRadius(c, R);
   return std::isfinite(out.x) && std::isfinite(out.y);

@@ -90,6 +90,9 @@ bool fitEllipseDirect(const Points2& pts, Ellipse& out) {
     }
   }
   if (!(best_cond > 0)) return false;
+  // An eigenvector's sign is arbitrary: take A + C > 0, so the quadratic form Q below is
+  // positive definite and its smaller eigenvalue belongs to the longer axis.
+  if (a1(0) + a1(2) < 0) a1 = -a1;
   const Eigen::Vector3d a2 = T * a1;
   const double A = a1(0), B = a1(1), C = a1(2), D = a2(0), E = a2(1), F = a2(2);
   // Centre, then the quadratic form at the centre: (p − c)ᵀ Q (p − c) = −F_c.
@@ -109,7 +112,7 @@ bool fitEllipseDirect(const Points2& pts, Ellipse& out) {
   if (ang <= -M_PI / 2) ang += M_PI;
   out = {mean.x() + scale * c.x(), mean.y() + scale * c.y(), scale * std::max(a, b),
          scale * std::min(a, b), ang};
-  if (b > a) {  // eigenvalues of opposite order (numerically equal): keep a ≥ b
+  if (b > a) {  // only by rounding, for a circle (equal eigenvalues): keep a ≥ b
     out.angle = std::remainder(ang + M_PI / 2, M_PI);
     if (out.angle <= -M_PI / 2) out.angle += M_PI;
   }

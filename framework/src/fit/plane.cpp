@@ -8,6 +8,7 @@ namespace pedtrack::fit {
 GroundPlane fitPlaneWeighted(const std::vector<Eigen::Vector3d>& pts,
                              const std::vector<double>& weights) {
   GroundPlane out;
+  if (weights.size() != pts.size()) return out;
   double sw = 0;
   int used = 0;
   Eigen::Vector3d c = Eigen::Vector3d::Zero();

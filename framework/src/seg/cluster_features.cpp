@@ -13,6 +13,30 @@ GroundAligned::GroundAligned(const GroundPlane& g) {
   offset_ = g.d / Eigen::Vector3d(g.nx, g.ny, g.nz).norm();
 }
 
+void setCentroidAndExtent(Cluster& c, const mrpt::maps::CSimplePointsMap& cloud) {
+  const auto& xs = cloud.getPointsBufferRef_x();
+  const auto& ys = cloud.getPointsBufferRef_y();
+  const auto& zs = cloud.getPointsBufferRef_z();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf}, sum[3] = {0, 0, 0};
+  for (std::uint32_t i : c.indices) {
+    const double p[3] = {xs[i], ys[i], zs[i]};
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+      sum[a] += p[a];
+    }
+  }
+  if (c.indices.empty()) return;
+  const double n = double(c.indices.size());
+  c.cx = sum[0] / n;
+  c.cy = sum[1] / n;
+  c.cz = sum[2] / n;
+  c.size_x = hi[0] - lo[0];
+  c.size_y = hi[1] - lo[1];
+  c.size_z = hi[2] - lo[2];
+}
+
 const std::vector<std::string>& p2FeatureNames() {
   static const std::vector<std::string> names = {"h", "w", "d", "v", "lambda", "rho"};
   return names;
@@ -52,20 +76,20 @@ P2Features p2Features(const std::vector<Eigen::Vector3d>& pts, double su, double
   std::size_t top = 0;
   for (const auto& p : pts) top += p.z() > 0.5 * f.h;
   f.lambda = double(top) / double(pts.size());
-  // Width–height projection, binary image of `pixel` cells over the projection's bounding box.
-  const int nw = static_cast<int>(std::floor(f.w / pixel)) + 1;
-  const int nh = static_cast<int>(std::floor((h1 - h0) / pixel)) + 1;
-  std::vector<std::uint8_t> img(static_cast<std::size_t>(nw) * nh, 0);
-  std::size_t on = 0;
+  // Width–height projection, a binary image of `pixel` cells over the projection's bounding
+  // box: occupied cells (distinct cell keys) over all cells.
+  const double nw = std::floor(f.w / pixel) + 1, nh = std::floor((h1 - h0) / pixel) + 1;
+  std::vector<std::uint64_t> cells;
+  cells.reserve(pts.size());
   for (const auto& p : pts) {
     const double across = -by * p.x() + bx * p.y();
-    const int i = std::min(nw - 1, static_cast<int>(std::floor((across - t0) / pixel)));
-    const int j = std::min(nh - 1, static_cast<int>(std::floor((p.z() - h0) / pixel)));
-    auto& cell = img[static_cast<std::size_t>(j) * nw + i];
-    on += cell == 0;
-    cell = 1;
+    const double i = std::min(nw - 1, std::floor((across - t0) / pixel));
+    const double j = std::min(nh - 1, std::floor((p.z() - h0) / pixel));
+    cells.push_back(static_cast<std::uint64_t>(j * nw + i));
   }
-  f.rho = double(on) / double(img.size());
+  std::sort(cells.begin(), cells.end());
+  const auto on = std::unique(cells.begin(), cells.end()) - cells.begin();
+  f.rho = double(on) / (nw * nh);
   return f;
 }
 

@@ -79,12 +79,13 @@ GroundPlane IrlsGround::update(const float* xs, const float* ys, const float* zs
                                const std::vector<PointLabel>* labels, double sx, double sy) {
   binLowest(xs, ys, zs, n, labels, sx, sy);
   if (!started_) {
-    // The ground is the lowest extensive surface: with auto_height its level in this first
-    // frame replaces the configured height (a log whose robot frame is the sensor's own).
-    default_ =
-        levelPlane(p_.auto_height && !binned_.empty() ? findDefaultHeight() : p_.default_height);
+    // The ground is the lowest extensive surface: with auto_height its level in the first frame
+    // that has cells replaces the configured height (a log whose robot frame is the sensor's
+    // own). Frames before that use the configured height and do not settle it.
+    const bool found = p_.auto_height && !binned_.empty();
+    default_ = levelPlane(found ? findDefaultHeight() : p_.default_height);
     prior_ = default_;
-    started_ = true;
+    started_ = found || !p_.auto_height;
   }
   // The data: the cells' lowest points plus the seed mesh on the default plane (P2: a
   // regulariser that holds the plane when the ground is occluded).

@@ -12,43 +12,26 @@
 namespace pedtrack::seg {
 
 std::vector<ScanRun> scanRuns(const Frame& frame, bool beams) {
-  std::vector<const mrpt::obs::CObservation2DRangeScan*> scans;
-  bool other = false;  // a non-2D range observation: its points' count is not known here
-  for (const auto& obs : frame.observations) {
-    if (!obs || !isRangeObservation(*obs)) continue;
-    const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(obs.get());
-    if (!scan) {
-      other = true;
-      continue;
+  std::vector<ScanRun> runs;
+  for (const CloudSpan& span : frame.cloudSpans()) {
+    const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(
+        frame.observations[span.observation].get());
+    if (!scan) continue;  // 3D observations form no run
+    ScanRun run;
+    run.first = span.first;
+    run.count = span.count;
+    run.sx = scan->sensorPose.x();
+    run.sy = scan->sensorPose.y();
+    if (beams) {
+      for (std::size_t b = 0; b < scan->getScanSize(); ++b)
+        if (scan->getScanRangeValidity(b)) run.beam.push_back(int(b));
+      if (run.beam.size() != run.count)
+        throw DataError("scan segments: a scan put " + std::to_string(run.count) +
+                        " points in the cloud but has " + std::to_string(run.beam.size()) +
+                        " valid beams");
     }
-    if (other)
-      throw DataError(
-          "scan segments: 2D scans after a 3D observation in one frame are not "
-          "supported");
-    scans.push_back(scan);
+    runs.push_back(std::move(run));
   }
-  const std::size_t total = frame.cloud().size();
-  std::vector<ScanRun> runs(scans.size());
-  std::size_t next = 0;
-  for (std::size_t k = 0; k < scans.size(); ++k) {
-    ScanRun& run = runs[k];
-    run.first = next;
-    run.sx = scans[k]->sensorPose.x();
-    run.sy = scans[k]->sensorPose.y();
-    if (beams || k + 1 < scans.size() || other) {
-      for (std::size_t b = 0; b < scans[k]->getScanSize(); ++b)
-        if (scans[k]->getScanRangeValidity(b)) {
-          ++run.count;
-          if (beams) run.beam.push_back(int(b));
-        }
-    } else {
-      run.count = total >= next ? total - next : 0;  // the last scan holds the rest
-    }
-    next += run.count;
-  }
-  if (next > total || (!other && next != total))
-    throw DataError("scan segments: the cloud holds " + std::to_string(total) +
-                    " points but the scans " + std::to_string(next) + " valid beams");
   return runs;
 }
 
@@ -106,6 +89,7 @@ const std::vector<std::string>& segmentFeatureNames() {
 std::vector<double> segmentFeatures(const fit::Points2& pts, double sx, double sy, double jump_prev,
                                     double jump_next) {
   const std::size_t n = pts.size();
+  if (n == 0) return std::vector<double>(segmentFeatureNames().size(), 0.0);
   std::vector<double> f;
   f.reserve(segmentFeatureNames().size());
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();

@@ -177,7 +177,7 @@ mrpt::obs::CObservation::Ptr ObservationMaker::make(const RangeImage& img, doubl
 // One return produced on `owner`: counted for its person and listed in cloud order.
 static void recordReturn(int owner, ReturnTruth& truth) {
   if (owner > 0 && owner < int(truth.per_person.size())) ++truth.per_person[owner];
-  truth.owners.push_back(owner);
+  if (truth.record_owners) truth.owners.push_back(owner);
 }
 
 mrpt::obs::CObservation::Ptr ObservationMaker::make2D(const RangeImage& img, double t,

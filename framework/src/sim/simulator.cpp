@@ -114,6 +114,7 @@ bool Simulator::next(SimFrame& f) {
 
   caster_.cast(f.sensor_true, {&s_.objects, &people_}, s_.ground, s_.sensor.max_range, image_);
   ReturnTruth returns;
+  returns.record_owners = point_truth_;
   returns.per_person.assign(s_.people.size() + 1, 0);
   auto odo = mrpt::obs::CObservationOdometry::Create();
   odo->sensorLabel = "ODOMETRY";
@@ -124,7 +125,7 @@ bool Simulator::next(SimFrame& f) {
   for (auto& r : rows) r.visible_points = returns.per_person[r.id];
   f.truth = std::move(rows);
   f.point_truth = std::move(returns.owners);
-  f.clearance = personClearance(image_, rays_, kClearanceCap);
+  if (point_truth_) f.clearance = personClearance(image_, rays_, kClearanceCap);
   f.ground = groundInRobotFrame(s_.ground, f.robot_true);
   ++k_;
   return true;

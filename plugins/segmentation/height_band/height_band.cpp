@@ -24,13 +24,15 @@ class HeightBand : public Segmenter {
     if (c.size() == 0) return;
     const auto& xs = c.getPointsBufferRef_x();
     const auto& ys = c.getPointsBufferRef_y();
-    const mrpt::poses::CPose3D mount = f.sensor_pose - f.robot_pose;
+    const auto& zs = c.getPointsBufferRef_z();
+    const GroundPlane& g = f.ground;
+    const mrpt::poses::CPose3D mount = f.sensorMount();
     const double sx = mount.x(), sy = mount.y(), axis = mount.yaw() + heading_;
     const bool sector = half_fov_ < M_PI;
     auto& labels = f.labels();
     for (std::size_t i = 0; i < c.size(); ++i) {
       if (labels[i] != PointLabel::Kept) continue;
-      const double h = f.heightOf(i);
+      const double h = g.valid ? g.height(xs[i], ys[i], zs[i]) : zs[i];  // as Frame::heightOf
       const double dx = xs[i] - sx, dy = ys[i] - sy, r = std::hypot(dx, dy);
       bool keep = h >= min_h_ && h <= max_h_ && r >= min_r_ && (max_r_ <= 0 || r <= max_r_);
       if (keep && sector)

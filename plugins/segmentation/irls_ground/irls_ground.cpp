@@ -41,7 +41,7 @@ class IrlsGroundStage : public Segmenter {
     const auto& xs = c.getPointsBufferRef_x();
     const auto& ys = c.getPointsBufferRef_y();
     const auto& zs = c.getPointsBufferRef_z();
-    const mrpt::poses::CPose3D mount = f.sensor_pose - f.robot_pose;
+    const mrpt::poses::CPose3D mount = f.sensorMount();
     f.ground =
         ground_.update(xs.data(), ys.data(), zs.data(), c.size(),
                        f.point_labels.empty() ? nullptr : &f.point_labels, mount.x(), mount.y());

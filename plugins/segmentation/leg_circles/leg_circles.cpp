@@ -44,6 +44,7 @@ class LegCircles : public Segmenter {
                            [](std::uint32_t i, const seg::ScanRun& r) { return i < r.first; });
       if (run == runs.begin()) continue;
       --run;
+      if (first >= run->first + run->count) continue;  // not from a 2D scan (a 3D cluster)
       pts.clear();
       for (std::uint32_t i : cl.indices) pts.emplace_back(xs[i], ys[i]);
       seg::Leg leg;

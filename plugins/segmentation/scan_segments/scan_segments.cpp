@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "pedtrack/plugin.h"
+#include "pedtrack/seg/cluster_features.h"
 
 namespace pedtrack::scansegments {
 namespace {
@@ -28,7 +29,6 @@ class ScanSegments : public Segmenter {
     const auto& c = f.cloud();
     const auto& xs = c.getPointsBufferRef_x();
     const auto& ys = c.getPointsBufferRef_y();
-    const auto& zs = c.getPointsBufferRef_z();
     fit::Points2 pts;
     for (const seg::ScanRun& run : seg::scanRuns(f, p_.max_missing >= 0)) {
       auto range = [&](std::size_t i) {
@@ -50,26 +50,11 @@ class ScanSegments : public Segmenter {
             break;
           }
         pts.clear();
+        for (std::uint32_t i : segment) pts.emplace_back(xs[i], ys[i]);
         Cluster cl;
-        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, sum[3] = {};
-        for (std::uint32_t i : segment) {
-          pts.emplace_back(xs[i], ys[i]);
-          const double p[3] = {xs[i], ys[i], zs[i]};
-          for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], p[a]);
-            hi[a] = std::max(hi[a], p[a]);
-            sum[a] += p[a];
-          }
-        }
-        const double n = double(segment.size());
-        cl.cx = sum[0] / n;
-        cl.cy = sum[1] / n;
-        cl.cz = sum[2] / n;
-        cl.size_x = hi[0] - lo[0];
-        cl.size_y = hi[1] - lo[1];
-        cl.size_z = hi[2] - lo[2];
-        cl.features = seg::segmentFeatures(pts, run.sx, run.sy, jp, jn);
         cl.indices = std::move(segment);
+        seg::setCentroidAndExtent(cl, c);
+        cl.features = seg::segmentFeatures(pts, run.sx, run.sy, jp, jn);
         f.clusters.push_back(std::move(cl));
       }
     }

@@ -37,7 +37,7 @@ class VoxelCcl : public Segmenter {
     const auto& ys = c.getPointsBufferRef_y();
     const auto& zs = c.getPointsBufferRef_z();
     const seg::GroundAligned align(f.ground);
-    const mrpt::poses::CPose3D mount = f.sensor_pose - f.robot_pose;
+    const mrpt::poses::CPose3D mount = f.sensorMount();
     const Eigen::Vector3d s = align(mount.x(), mount.y(), mount.z());
     // The sensor's forward axis on the ground (P2's grid lies in front of the sensor).
     const Eigen::Vector3d ahead =
@@ -53,24 +53,27 @@ class VoxelCcl : public Segmenter {
       if (labels[i] != PointLabel::Kept) continue;
       const Eigen::Vector3d q = align(xs[i], ys[i], zs[i]);
       const double du = q.x() - s.x(), dv = q.y() - s.y();
-      seg::Voxel v;
+      // Bounds are tested on the doubles: only points inside (finite, bounded) are cast.
+      double v[3];
       bool inside;
       if (p2_grid_) {  // 100 voxels ahead, 64 across, 50 up (P2's 64 × 50 × 100 image)
-        const double along = fx * du + fy * dv, across = -fy * du + fx * dv;
-        v = {int(std::floor(along * inv)), int(std::floor(across * inv)) + 32,
-             int(std::floor(q.z() * inv_h))};
+        v[0] = std::floor((fx * du + fy * dv) * inv);
+        v[1] = std::floor((-fy * du + fx * dv) * inv) + 32;
+        v[2] = std::floor(q.z() * inv_h);
         inside = v[0] >= 0 && v[0] < 100 && v[1] >= 0 && v[1] < 64 && v[2] >= 0 && v[2] < 50;
       } else {
-        inside = du * du + dv * dv <= max_range_ * max_range_ && q.z() >= min_h_ && q.z() <= max_h_;
-        v = {int(std::floor(q.x() * inv)), int(std::floor(q.y() * inv)),
-             int(std::floor(q.z() * inv_h))};
+        v[0] = std::floor(q.x() * inv);
+        v[1] = std::floor(q.y() * inv);
+        v[2] = std::floor(q.z() * inv_h);
+        inside = du * du + dv * dv <= max_range_ * max_range_ && q.z() >= min_h_ &&
+                 q.z() <= max_h_ && std::abs(v[0]) < 1e8 && std::abs(v[1]) < 1e8;
       }
-      if (!inside || !std::isfinite(q.z())) {
+      if (!inside) {  // NaN coordinates fail every comparison and land here too
         labels[i] = PointLabel::Removed;
         continue;
       }
+      voxels_.push_back({int(v[0]), int(v[1]), int(v[2])});
       index_.push_back(std::uint32_t(i));
-      voxels_.push_back(v);
       aligned_.push_back(q);
     }
     const int count = labeler_.label(voxels_, connectivity_, component_);
@@ -88,25 +91,11 @@ class VoxelCcl : public Segmenter {
       Cluster cl;
       cl.indices.reserve(n);
       pts.clear();
-      double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, sum[3] = {0, 0, 0};
       for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
-        const std::size_t j = order_[m];
-        const std::uint32_t i = index_[j];
-        cl.indices.push_back(i);
-        pts.push_back(aligned_[j]);
-        const double p[3] = {xs[i], ys[i], zs[i]};
-        for (int a = 0; a < 3; ++a) {
-          lo[a] = std::min(lo[a], p[a]);
-          hi[a] = std::max(hi[a], p[a]);
-          sum[a] += p[a];
-        }
+        cl.indices.push_back(index_[order_[m]]);
+        pts.push_back(aligned_[order_[m]]);
       }
-      cl.cx = sum[0] / n;
-      cl.cy = sum[1] / n;
-      cl.cz = sum[2] / n;
-      cl.size_x = hi[0] - lo[0];
-      cl.size_y = hi[1] - lo[1];
-      cl.size_z = hi[2] - lo[2];
+      seg::setCentroidAndExtent(cl, c);
       const seg::P2Features ft = seg::p2Features(pts, s.x(), s.y(), voxel_);
       cl.features = {ft.h, ft.w, ft.d, ft.v, ft.lambda, ft.rho};
       f.clusters.push_back(std::move(cl));

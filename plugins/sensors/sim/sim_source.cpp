@@ -29,6 +29,7 @@ class SimSource : public Sensor {
     // auto: next to the run's tracks.csv; none: nowhere; anything else: that path.
     std::string path = truth_key_;
     if (truth_key_ == "auto") path = out_dir.empty() ? "" : out_dir + "/truth.csv";
+    sim_.setPointTruth(false);  // on again below when it is written
     if (truth_key_ == "none" || path.empty()) return;
     std::error_code ec;
     if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty())
@@ -40,6 +41,7 @@ class SimSource : public Sensor {
       truth_ = std::make_unique<sim::TruthCsvWriter>(path);
       if (point_truth_)
         point_truth_out_ = std::make_unique<LabelFileWriter>(points, LabelKind::Truth);
+      sim_.setPointTruth(point_truth_);
     } catch (const DataError&) {
       throw ConfigError(where_ + ": cannot write '" + (truth_ ? points : path) + "'");
     }

@@ -34,6 +34,10 @@ struct P2Features {
   double rho = 0;     ///< density of the width–height projection at `pixel` resolution
 };
 
+/// Sets a cluster's position (the centroid of its points) and extent (sizes of their bounding
+/// box along the robot's axes) from `cloud`.
+void setCentroidAndExtent(Cluster& c, const mrpt::maps::CSimplePointsMap& cloud);
+
 /// The names under which voxel_ccl reports P2Features in Cluster::features (clusters.csv).
 const std::vector<std::string>& p2FeatureNames();
 

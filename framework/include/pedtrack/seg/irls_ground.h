@@ -45,8 +45,8 @@ class IrlsGround {
  public:
   explicit IrlsGround(const IrlsParams& p) : p_(p) {}
 
-  /// Estimates this frame's plane from the points (robot frame; `keep[i]` false skips point i,
-  /// null keeps all) seen from a sensor at (sx, sy), and keeps it as the next frame's prior.
+  /// Estimates this frame's plane from the points (robot frame; with `labels`, only points still
+  /// Kept) seen from a sensor at (sx, sy), and keeps it as the next frame's prior.
   GroundPlane update(const float* xs, const float* ys, const float* zs, std::size_t n,
                      const std::vector<PointLabel>* labels, double sx, double sy);
 

@@ -17,10 +17,9 @@ struct ScanRun {
   double sx = 0, sy = 0;  ///< sensor position, robot frame
 };
 
-/// One run per 2D scan of the frame, in cloud order, with each point's beam index when `beams`
-/// (the scans' validity flags are read then; a single scan without beams needs no pass over
-/// them). Throws DataError when the cloud does not hold exactly the scans' valid beams; 3D
-/// observations form no run and may not precede a 2D scan.
+/// One run per 2D scan of the frame, in cloud order (from Frame::cloudSpans()), with each
+/// point's beam index when `beams` (read from the scan's validity flags; DataError when their
+/// count differs from the scan's points in the cloud). 3D observations form no run.
 std::vector<ScanRun> scanRuns(const Frame& frame, bool beams = true);
 
 struct SegmentParams {

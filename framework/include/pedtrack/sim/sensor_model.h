@@ -66,6 +66,7 @@ class RayTable {
 
 /// What one made observation contains besides itself.
 struct ReturnTruth {
+  bool record_owners = true;    ///< fill `owners` (per-point truth)
   std::vector<int> per_person;  ///< returns produced on each person, indexed by person id
   /// The owner of every return, in the order Frame::cloud() lists the observation's points (2D:
   /// valid beams in beam order; VLP-16: packet, block, firing, laser, as the decoder reads them).
