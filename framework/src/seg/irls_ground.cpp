@@ -10,17 +10,21 @@
 namespace pedtrack::seg {
 
 double irlsWeight(double x, const IrlsParams& p) {
-  return 1.0 / (1.0 + p.A * std::exp(p.B * (x - p.C))) + p.D;
+  const double e = p.B * (x - p.C);
+  if (e > 700) return p.D;  // A·e^e overflows; the logistic term is 0 long before
+  return 1.0 / (1.0 + p.A * std::exp(e)) + p.D;
 }
 
 GroundPlane irlsIteration(const std::vector<Eigen::Vector3d>& pts, const GroundPlane& prior,
                           const IrlsParams& p, std::vector<double>* weights) {
-  std::vector<double> local;
-  std::vector<double>& w = weights ? *weights : local;
-  w.resize(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    w[i] = irlsWeight(std::abs(prior.height(pts[i].x(), pts[i].y(), pts[i].z())), p);
-  return fit::fitPlaneWeighted(pts, w);
+  if (weights) weights->resize(pts.size());
+  fit::PlaneMoments m;  // weights and moments in one pass
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double w = irlsWeight(std::abs(prior.height(pts[i].x(), pts[i].y(), pts[i].z())), p);
+    if (weights) (*weights)[i] = w;
+    m.add(pts[i], w);
+  }
+  return m.plane();
 }
 
 GroundPlane levelPlane(double z) {
@@ -100,7 +104,7 @@ GroundPlane IrlsGround::update(const float* xs, const float* ys, const float* zs
     }
   GroundPlane plane = prior_;
   for (int it = 0; it < p_.iterations; ++it) {
-    const GroundPlane next = irlsIteration(data_, plane, p_, &weights_);
+    const GroundPlane next = irlsIteration(data_, plane, p_);
     if (!next.valid) break;
     const double moved = std::abs(next.d - plane.d) + std::abs(next.nx - plane.nx) +
                          std::abs(next.ny - plane.ny) + std::abs(next.nz - plane.nz);
@@ -108,10 +112,10 @@ GroundPlane IrlsGround::update(const float* xs, const float* ys, const float* zs
     if (moved < p_.tolerance) break;
   }
   if (plane.valid && p_.refine_band > 0) {
-    for (std::size_t i = 0; i < data_.size(); ++i)
-      weights_[i] =
-          std::abs(plane.height(data_[i].x(), data_[i].y(), data_[i].z())) <= p_.refine_band;
-    const GroundPlane refined = fit::fitPlaneWeighted(data_, weights_);
+    fit::PlaneMoments inliers;
+    for (const Eigen::Vector3d& q : data_)
+      if (std::abs(plane.height(q.x(), q.y(), q.z())) <= p_.refine_band) inliers.add(q, 1.0);
+    const GroundPlane refined = inliers.plane();
     if (refined.valid) plane = refined;
   }
   if (!plane.valid || plane.angleTo(default_) > p_.max_tilt) {

@@ -95,16 +95,32 @@ int VoxelLabeler::label(const std::vector<Voxel>& voxels, Connectivity connectiv
   const int V = static_cast<int>(keys_.size());
   parent_.resize(V);
   for (int v = 0; v < V; ++v) parent_[v] = v;
+  // Neighbours grouped by (dx, dy) row: a row's offsets (dz = -1, 0, +1) are consecutive keys,
+  // so one cursor per row finds them all.
+  struct Row {
+    std::int64_t base;  // key offset of (dx, dy, 0)
+    int dz_lo, dz_hi;   // the row's dz range
+    bool has[3];        // which of dz = -1, 0, +1 are neighbours
+  };
+  std::vector<Row> rows;
   for (const Voxel& d : forwardNeighbours(connectivity)) {
-    const std::int64_t off =
-        (std::int64_t(d[0]) * std::int64_t(ny) + d[1]) * std::int64_t(nz) + d[2];
+    const std::int64_t base = (std::int64_t(d[0]) * std::int64_t(ny) + d[1]) * std::int64_t(nz);
+    if (rows.empty() || rows.back().base != base) rows.push_back({base, d[2], d[2], {}});
+    Row& r = rows.back();
+    r.dz_lo = std::min(r.dz_lo, d[2]);
+    r.dz_hi = std::max(r.dz_hi, d[2]);
+    r.has[d[2] + 1] = true;
+  }
+  for (const Row& r : rows) {
     int j = 0;
     for (int i = 0; i < V; ++i) {
-      const std::uint64_t target = keys_[i] + off;  // off > 0: keys after keys_[i]
-      while (j < V && keys_[j] < target) ++j;
+      // Keys fit in 63 bits: signed arithmetic, so dz = -1 needs no wrap-around.
+      const std::int64_t centre = std::int64_t(keys_[i]) + r.base;  // later keys than keys_[i]
+      while (j < V && std::int64_t(keys_[j]) < centre + r.dz_lo) ++j;
       if (j == V) break;
-      if (keys_[j] == target) {
-        const int a = find(i), b = find(j);
+      for (int k = j; k < V && std::int64_t(keys_[k]) <= centre + r.dz_hi; ++k) {
+        if (!r.has[std::int64_t(keys_[k]) - centre + 1]) continue;
+        const int a = find(i), b = find(k);
         if (a != b) parent_[std::max(a, b)] = std::min(a, b);
       }
     }

@@ -13,6 +13,12 @@
 namespace pedtrack::voxelccl {
 namespace {
 
+// floor() of a value known to fit an int, without the libm call.
+int floorInt(double x) {
+  const int i = static_cast<int>(x);
+  return i - (x < i);
+}
+
 class VoxelCcl : public Segmenter {
  public:
   explicit VoxelCcl(const PluginContext& ctx)
@@ -57,14 +63,14 @@ class VoxelCcl : public Segmenter {
       double v[3];
       bool inside;
       if (p2_grid_) {  // 100 voxels ahead, 64 across, 50 up (P2's 64 × 50 × 100 image)
-        v[0] = std::floor((fx * du + fy * dv) * inv);
-        v[1] = std::floor((-fy * du + fx * dv) * inv) + 32;
-        v[2] = std::floor(q.z() * inv_h);
+        v[0] = (fx * du + fy * dv) * inv;
+        v[1] = (-fy * du + fx * dv) * inv + 32;
+        v[2] = q.z() * inv_h;
         inside = v[0] >= 0 && v[0] < 100 && v[1] >= 0 && v[1] < 64 && v[2] >= 0 && v[2] < 50;
       } else {
-        v[0] = std::floor(q.x() * inv);
-        v[1] = std::floor(q.y() * inv);
-        v[2] = std::floor(q.z() * inv_h);
+        v[0] = q.x() * inv;
+        v[1] = q.y() * inv;
+        v[2] = q.z() * inv_h;
         inside = du * du + dv * dv <= max_range_ * max_range_ && q.z() >= min_h_ &&
                  q.z() <= max_h_ && std::abs(v[0]) < 1e8 && std::abs(v[1]) < 1e8;
       }
@@ -72,7 +78,7 @@ class VoxelCcl : public Segmenter {
         labels[i] = PointLabel::Removed;
         continue;
       }
-      voxels_.push_back({int(v[0]), int(v[1]), int(v[2])});
+      voxels_.push_back({floorInt(v[0]), floorInt(v[1]), floorInt(v[2])});
       index_.push_back(std::uint32_t(i));
       aligned_.push_back(q);
     }

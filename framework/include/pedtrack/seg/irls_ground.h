@@ -22,7 +22,7 @@ struct IrlsParams {
   /// the cells' lowest points) instead of default_height.
   bool auto_height = true;
   int iterations = 10;      ///< IRLS iterations per frame at most
-  double tolerance = 1e-4;  ///< stop when the plane moves less (normal and offset), m
+  double tolerance = 1e-3;  ///< stop when the plane moves less (normal and offset), m
   double max_tilt = 0.35;   ///< rad: estimates tilted more from the default plane are refused
   /// > 0: after IRLS, refit by plain least squares to the data within this distance of the
   /// IRLS plane (m). Removes the pull of the weight floor D on off-plane points, which tilts
@@ -68,7 +68,6 @@ class IrlsGround {
   std::vector<float> cell_z_;  // lowest z per cell, +inf when empty (reused)
   std::vector<int> cell_i_;    // point index of that lowest z
   std::vector<Eigen::Vector3d> binned_, data_;
-  std::vector<double> weights_;
 };
 
 }  // namespace pedtrack::seg
