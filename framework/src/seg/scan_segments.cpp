@@ -91,7 +91,7 @@ std::vector<double> segmentFeatures(const fit::Points2& pts, double sx, double s
   const std::size_t n = pts.size();
   if (n == 0) return std::vector<double>(segmentFeatureNames().size(), 0.0);
   std::vector<double> f;
-  f.reserve(segmentFeatureNames().size());
+  f.reserve(segmentFeatureNames().size() + 2);  // room for a leg stage's two without a copy
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const auto& p : pts) mean += p;
   mean /= double(std::max<std::size_t>(n, 1));

@@ -34,6 +34,7 @@ class LegCircles : public Segmenter {
     const std::vector<seg::ScanRun> runs = seg::scanRuns(f, false);
     std::vector<Cluster> legs;
     std::vector<Eigen::Vector2d> centres;
+    legs.reserve(f.clusters.size());
     fit::Points2 pts;
     for (Cluster& cl : f.clusters) {
       if (cl.indices.empty()) continue;

@@ -36,7 +36,9 @@ class ScanSegments : public Segmenter {
         return std::sqrt(dx * dx + dy * dy);
       };
       const std::size_t end = run.first + run.count;
-      for (auto& segment : seg::splitRun(f, run, p_)) {
+      auto segments = seg::splitRun(f, run, p_);
+      f.clusters.reserve(f.clusters.size() + segments.size());
+      for (auto& segment : segments) {
         // The kept returns just outside the segment, for the jump features.
         double jp = 0, jn = 0;
         for (std::size_t i = segment.front(); i-- > run.first;)
