@@ -1,0 +1,147 @@
+// The segmentation plugins on hand-made frames, driven through a pipeline's stages as a run
+// drives them: what each labels, the clusters it makes, and bad points that must not stop it.
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationPointCloud.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "pedtrack/pipeline.h"
+#include "test_support.h"
+
+using namespace pedtrack;
+using namespace pedtrack::test;
+
+namespace {
+
+const std::string kSena = mrptDataset("2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
+
+// A pipeline whose stages the test drives itself (the source is never read).
+struct Stages {
+  PipelineConfig config;
+  std::unique_ptr<Pipeline> pipeline;
+  Stages(const std::string& stages, const std::string& sections) {
+    config = PipelineConfig::fromText("[pipeline]\nstages = source " + stages +
+                                          "\n[source]\nplugin = rawlog\nfile = " + kSena + "\n" +
+                                          sections,
+                                      "t.ini", {}, testRegistry());
+    pipeline = std::make_unique<Pipeline>(config);
+  }
+  void run(Frame& f) {
+    for (Stage* s : pipeline->stages()) s->process(f);
+  }
+};
+
+Frame cloudFrame(const std::vector<std::array<float, 3>>& pts) {
+  auto obs = mrpt::obs::CObservationPointCloud::Create();
+  auto map = mrpt::maps::CSimplePointsMap::Create();
+  for (const auto& p : pts) map->insertPointFast(p[0], p[1], p[2]);
+  obs->pointcloud = map;
+  Frame f;
+  f.observations.push_back(obs);
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("height_band keeps a height band and a sector of ranges", "[plugins][band]") {
+  Stages s("band",
+           "[band]\nplugin = height_band\nmin_height = 0.6\nmax_height = 2.0\nmin_range = 1\n"
+           "max_range = 10\nfov = 180\nheading = 0\n");
+  // No ground stage: heights are robot-frame z. Ahead (+x) unless said otherwise.
+  Frame f = cloudFrame({{3, 0, 1.0},      // kept
+                        {3, 0, 0.3},      // too low (legs)
+                        {3, 0, 2.5},      // too high
+                        {0.5, 0, 1.0},    // too near
+                        {12, 0, 1.0},     // too far
+                        {-3, 0.1, 1.0},   // behind: outside the 180° sector
+                        {0.2, 3, 1.0}});  // at 86° left: inside
+  REQUIRE(f.cloud().size() == 7);
+  s.run(f);
+  std::vector<PointLabel> want(7, PointLabel::Removed);
+  want[0] = want[6] = PointLabel::Kept;
+  CHECK(f.point_labels == want);
+}
+
+TEST_CASE("irls_ground then voxel_ccl: ground labelled, two people, P2 features", "[plugins]") {
+  Stages s("ground clusters",
+           "[ground]\nplugin = irls_ground\n[clusters]\nplugin = voxel_ccl\nvoxel = 0.15\n"
+           "voxel_height = 1.0\nmin_points = 5\n");
+  std::vector<std::array<float, 3>> pts;
+  for (int i = -40; i <= 40; ++i)  // ground, 10 cm grid out to 4 m
+    for (int j = -40; j <= 40; ++j) pts.push_back({0.1f * i, 0.1f * j, 0.0f});
+  const std::size_t ground = pts.size();
+  for (float cx : {2.0f, -2.0f})  // two 1.7 m "people": a column of points every 5 cm
+    for (int k = 2; k <= 34; ++k)
+      for (float dy : {-0.1f, 0.0f, 0.1f}) pts.push_back({cx, dy + 1.0f, 0.05f * k});
+  Frame f = cloudFrame(pts);
+  s.run(f);
+  REQUIRE(f.ground.valid);
+  CHECK(f.ground.nz == Approx(1).margin(1e-6));
+  CHECK(f.ground.d == Approx(0).margin(0.01));
+  for (std::size_t i = 0; i < ground; ++i) REQUIRE(f.point_labels[i] == PointLabel::Ground);
+  REQUIRE(f.clusters.size() == 2);
+  REQUIRE(f.cluster_feature_names);
+  CHECK(*f.cluster_feature_names == std::vector<std::string>{"h", "w", "d", "v", "lambda", "rho"});
+  for (const Cluster& c : f.clusters) {
+    CHECK(c.indices.size() == 33 * 3);  // rows at 0.10 ... 1.70 m, all above the 5 cm band
+    CHECK(std::abs(c.cx) == Approx(2.0).margin(1e-5));
+    CHECK(c.cy == Approx(1.0).margin(1e-5));
+    CHECK(c.size_z == Approx(1.7 - 0.1).margin(1e-5));
+    CHECK(c.features[0] == Approx(1.7).margin(1e-5));  // h
+    CHECK(c.features[4] == Approx(0.5).margin(0.05));  // λ: half the column above h/2
+  }
+}
+
+TEST_CASE("bad points do not stop the segmenters: NaN and far points are removed", "[plugins]") {
+  Stages s("ground clusters", "[ground]\nplugin = irls_ground\n[clusters]\nplugin = voxel_ccl\n");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<std::array<float, 3>> pts = {
+      {nan, 0, 1}, {1, nan, 1}, {1, 1, nan}, {1e30f, 0, 1}, {3, 0, 1.0}};
+  for (int i = 0; i < 10; ++i) pts.push_back({3, 0.02f * i, 1.0f});
+  Frame f = cloudFrame(pts);
+  REQUIRE_NOTHROW(s.run(f));
+  if (f.point_labels.size() == f.cloud().size())
+    for (std::size_t i = 0; i < 4 && i < f.cloud().size(); ++i)
+      CHECK(f.point_labels[i] != PointLabel::Kept);
+  CHECK(f.clusters.size() == 1);
+  // An empty frame too.
+  Frame empty = cloudFrame({});
+  REQUIRE_NOTHROW(s.run(empty));
+  CHECK(empty.clusters.empty());
+}
+
+TEST_CASE("scan_segments then leg_circles: two legs found and paired", "[plugins][legs]") {
+  Stages s("segments legs", "[segments]\nplugin = scan_segments\n[legs]\nplugin = leg_circles\n");
+  // A 0.25° scan with two 5 cm legs 2 m ahead, 0.3 m apart, and a wall at 4 m.
+  auto scan = mrpt::obs::CObservation2DRangeScan::Create();
+  const int n = 241;
+  scan->aperture = float(60 * M_PI / 180);
+  scan->rightToLeft = true;
+  scan->maxRange = 30;
+  scan->resizeScan(n);
+  for (int i = 0; i < n; ++i) {
+    const double a = -scan->aperture / 2 + scan->aperture * i / (n - 1);
+    const double c = std::cos(a), s2 = std::sin(a);
+    double r = 4.0 / c;                // the wall x = 4
+    for (double ly : {-0.15, 0.15}) {  // ray-circle intersection with each leg
+      const double b = c * 2.0 + s2 * ly, disc = b * b - (4.0 + ly * ly - 0.0025);
+      if (disc >= 0 && b - std::sqrt(disc) > 0) r = std::min(r, b - std::sqrt(disc));
+    }
+    scan->setScanRange(i, float(r));
+    scan->setScanRangeValidity(i, true);
+  }
+  Frame f;
+  f.observations.push_back(scan);
+  s.run(f);
+  REQUIRE(f.clusters.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    CHECK(f.clusters[k].cx == Approx(2.0).margin(0.005));
+    CHECK(std::abs(f.clusters[k].cy) == Approx(0.15).margin(0.005));
+    CHECK(f.clusters[k].pair == int(1 - k));
+    CHECK(f.clusters[k].features.back() < 0.005);  // leg_residual
+  }
+  CHECK(f.cluster_feature_names->back() == "leg_residual");
+}
