@@ -47,9 +47,14 @@ class IrlsGroundStage : public Segmenter {
                        f.point_labels.empty() ? nullptr : &f.point_labels, mount.x(), mount.y());
     if (c.size() == 0) return;
     auto& labels = f.labels();
-    for (std::size_t i = 0; i < c.size(); ++i)
-      if (labels[i] == PointLabel::Kept && !(f.ground.height(xs[i], ys[i], zs[i]) > threshold_))
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (labels[i] != PointLabel::Kept) continue;
+      const double h = f.ground.height(xs[i], ys[i], zs[i]);
+      if (!std::isfinite(h))
+        labels[i] = PointLabel::Removed;  // a non-finite point is no measurement
+      else if (h <= threshold_)
         labels[i] = PointLabel::Ground;
+    }
   }
 
  private:
