@@ -68,7 +68,7 @@ double Frame::heightOf(std::size_t i) const {
   const auto& c = cloud();
   const double x = c.getPointsBufferRef_x()[i], y = c.getPointsBufferRef_y()[i],
                z = c.getPointsBufferRef_z()[i];
-  return ground.valid ? ground.height(x, y, z) : z;
+  return ground.heightOrZ(x, y, z);
 }
 
 double GroundPlane::angleTo(const GroundPlane& o) const {

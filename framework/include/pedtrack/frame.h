@@ -40,6 +40,8 @@ struct GroundPlane {
   bool valid = false;
   double nx = 0, ny = 0, nz = 1, d = 0;
   double height(double x, double y, double z) const { return nx * x + ny * y + nz * z + d; }
+  /// height() when the plane is valid, else z itself (the robot frame's own height).
+  double heightOrZ(double x, double y, double z) const { return valid ? height(x, y, z) : z; }
   /// Angle between this plane's normal and another's (rad).
   double angleTo(const GroundPlane& o) const;
 };

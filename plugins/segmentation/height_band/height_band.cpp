@@ -32,7 +32,7 @@ class HeightBand : public Segmenter {
     auto& labels = f.labels();
     for (std::size_t i = 0; i < c.size(); ++i) {
       if (labels[i] != PointLabel::Kept) continue;
-      const double h = g.valid ? g.height(xs[i], ys[i], zs[i]) : zs[i];  // as Frame::heightOf
+      const double h = g.heightOrZ(xs[i], ys[i], zs[i]);
       const double dx = xs[i] - sx, dy = ys[i] - sy, r = std::hypot(dx, dy);
       bool keep = h >= min_h_ && h <= max_h_ && r >= min_r_ && (max_r_ <= 0 || r <= max_r_);
       if (keep && sector)

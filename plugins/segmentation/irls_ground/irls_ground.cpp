@@ -3,6 +3,7 @@
 #include "pedtrack/seg/irls_ground.h"
 
 #include <cmath>
+#include <iostream>
 
 #include "pedtrack/plugin.h"
 
@@ -35,6 +36,13 @@ class IrlsGroundStage : public Segmenter {
  public:
   explicit IrlsGroundStage(const PluginContext& ctx)
       : ground_(readParams(ctx.params)), threshold_(ctx.params.getDouble("threshold")) {}
+
+  void finish() override {
+    if (ground_.refused())
+      std::cerr << "warning: irls_ground: " << ground_.refused()
+                << " frames' planes were refused (tilted beyond max_tilt or degenerate); the "
+                   "previous plane was kept\n";
+  }
 
   void process(Frame& f) override {
     const auto& c = f.cloud();
