@@ -93,6 +93,8 @@ int benchCommand(const std::vector<std::string>& args) {
   std::string input, out, scenario, pipeline, topic;
   long frames = 200, repeat = 5;
   std::vector<std::string> plugin_path, sets;
+  std::string model, samples;
+  long batch = 100;
   opts.add_options()("scans", po::value(&scans)->default_value(100000),
                      "synthetic 2D scans to replay")(
       "beams", po::value(&beams)->default_value(1081), "beams per synthetic scan")(
@@ -106,6 +108,9 @@ int benchCommand(const std::vector<std::string>& args) {
       "repeat", po::value(&repeat)->default_value(5), "--pipeline: passes over the cached frames")(
       "topic", po::value(&topic), "--pipeline with a bag --input: its topics")(
       "set", po::value(&sets)->composing(), "--pipeline: override a key, section.key=value")(
+      "model", po::value(&model), "bench this classifier model instead (with --samples)")(
+      "samples", po::value(&samples), "--model: labelled samples CSV whose vectors are scored")(
+      "batch", po::value(&batch)->default_value(100), "--model: clusters scored per call")(
       "plugin-path", po::value(&plugin_path)->composing(), "extra plugin directory (repeatable)");
   po::positional_options_description pos;
   po::variables_map vm;
@@ -113,6 +118,7 @@ int benchCommand(const std::vector<std::string>& args) {
   if (scans < 1 || beams < 2)
     throw ConfigError("pedtrack bench: --scans must be >= 1 and --beams >= 2");
 
+  if (!model.empty()) return benchModel(model, samples, batch, repeat);
   if (!pipeline.empty()) {
     if (frames < 1 || repeat < 1)
       throw ConfigError("pedtrack bench: --frames and --repeat must be >= 1");

@@ -168,6 +168,8 @@ int evalSegmentation(const EvalArgs& a) {
 }  // namespace
 
 int evalCommand(const std::vector<std::string>& args) {
+  for (const auto& s : args)
+    if (s == "--model" || s.rfind("--model=", 0) == 0) return evalClassifierCommand(args);
   EvalArgs a;
   po::options_description opts("options");
   opts.add_options()("truth", po::value(&a.truth)->composing(),
@@ -206,11 +208,13 @@ int evalCommand(const std::vector<std::string>& args) {
       "json", po::bool_switch(&a.json), "print one JSON object instead of the table");
   po::positional_options_description pos;
   po::variables_map vm;
-  if (!parseOptions("eval",
-                    "--truth truth.csv --tracks tracks.csv [options] | --truth truth.csv|BAG.bag "
-                    "--detections detections.csv|clusters.csv [options] | --truth-points "
-                    "truth_points.bin --labels point_labels.bin [options]",
-                    opts, pos, args, vm))
+  if (!parseOptions(
+          "eval",
+          "--truth truth.csv --tracks tracks.csv [options] | --truth truth.csv|BAG.bag "
+          "--detections detections.csv|clusters.csv [options] | --truth-points "
+          "truth_points.bin --labels point_labels.bin [options] | --model MODEL.yml --dataset "
+          "D.ini [options] (classifiers: `pedtrack eval --model M --help`)",
+          opts, pos, args, vm))
     return exit_code::kOk;
   a.has_following = vm.count("following") > 0;
   if (!vm.count("threshold")) a.threshold = a.tracks.empty() ? 0.1 : 0.75;

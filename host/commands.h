@@ -12,12 +12,18 @@ int benchCommand(const std::vector<std::string>& args);
 int evalCommand(const std::vector<std::string>& args);
 int simCommand(const std::vector<std::string>& args);
 int renderCommand(const std::vector<std::string>& args);
+int trainCommand(const std::vector<std::string>& args);
+/// `pedtrack eval --model`: classifier models scored on labelled clusters.
+int evalClassifierCommand(const std::vector<std::string>& args);
 
 /// `pedtrack bench --pipeline`: the stages of a pipeline timed on frames read (and decoded)
 /// beforehand, so the figures are the stages' own.
 int benchStages(const std::string& pipeline, const std::string& input, const std::string& topic,
                 const std::vector<std::string>& sets, long frames, long repeat,
                 const std::vector<std::string>& plugin_path);
+
+/// `pedtrack bench --model`: a classifier model timed on batches of a samples file's vectors.
+int benchModel(const std::string& model, const std::string& samples, long batch, long repeat);
 
 /// Installs SIGINT/SIGTERM handlers that ask a running pipeline to stop after the current frame.
 void installStopHandlers();

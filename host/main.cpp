@@ -22,7 +22,8 @@ const char* kUsage =
     "  import INPUT       convert a ROS1 bag or rawlog to a rawlog (--topic selects topics)\n"
     "  sim SCENARIO.ini   simulate a scene into a rawlog plus truth.csv\n"
     "  bench              measure replay or simulation throughput (Release build)\n"
-    "  eval               score tracks (MOTA, IDF1, HOTA, NEES) or detections vs truth\n"
+    "  eval               score tracks (MOTA, IDF1, HOTA, NEES), detections or classifiers\n"
+    "  train knn|svm      build a person classifier model from labelled clusters\n"
     "  render             draw a run's tracks over its rawlog: a PNG or an MP4 video\n"
     "\n"
     "`pedtrack <command> --help` shows a command's options. Exit codes: 0 success, 1 failure\n"
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
     if (cmd == "eval") return cli::evalCommand(args);
     if (cmd == "sim") return cli::simCommand(args);
     if (cmd == "render") return cli::renderCommand(args);
+    if (cmd == "train") return cli::trainCommand(args);
     std::cerr << "error: unknown command '" << cmd << "' (see `pedtrack --help`)\n";
     return exit_code::kBadInput;
   } catch (const ConfigError& e) {

@@ -7,7 +7,8 @@ packages=(
   libboost-filesystem-dev libboost-program-options-dev
   catch2
   coinor-libipopt-dev                          # Ipopt: the reference solver of the circle-fit test
-  libopencv-dev                                # pedtrack render: drawing, PNG, MP4 (FFmpeg backend)
+  libopencv-dev                                # pedtrack render: drawing, PNG, MP4 (FFmpeg backend); SVM
+  libnanoflann-dev                             # k-NN KD-tree (also pulled in by libmrpt-dev)
   librosbag-storage-dev libmrpt-ros1bridge-dev  # ROS1 bag replay
   libtf2-dev libtf2-msgs-dev libsensor-msgs-dev libnav-msgs-dev
 )

@@ -159,6 +159,10 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
   if (!model.hasSection("pipeline"))
     throw ConfigError(file +
                       ": no [pipeline] section (it lists the stages: `stages = source ...`)");
+  // `--set pipeline.stages=...` chooses the stages, so it applies before they are read.
+  for (const auto& s : overrides.sets)
+    if (s.rfind("pipeline.", 0) == 0 && s.find('=') != std::string::npos)
+      model.set("pipeline", trim(s.substr(9, s.find('=') - 9)), trim(s.substr(s.find('=') + 1)));
   for (const auto& [k, v] : model.keys.at("pipeline"))
     if (k != "stages")
       throw ConfigError(file + ": [pipeline] " + k + ": unknown key (the only key is 'stages')");

@@ -171,6 +171,13 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
     ps.body.beta = in(0.10, 0.15);
     ps.body.height = in(1.55, 1.92);
     ps.body.step_length = in(0.55, 0.75);
+    // Children draw only when the scenario has them: scenarios without keep their numbers.
+    if (cr.getDouble("child_share") > 0 && u01(rng) < cr.getDouble("child_share")) {
+      ps.body.height = in(1.0, 1.45);
+      ps.body.alpha = in(0.13, 0.17);
+      ps.body.beta = in(0.08, 0.11);
+      ps.body.step_length = in(0.40, 0.55);
+    }
     CrowdAgent ag;
     ag.speed = in(cr.getDouble("speed_min"), cr.getDouble("speed_max"));
     ag.radius = ps.body.alpha + 0.05;
@@ -336,6 +343,12 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
       if (t != "pole" && t != "box" && t != "bin" && t != "tree" && t != "wall")
         throw ConfigError(cl.where("types") + ": unknown object type '" + t + "'");
     if (types.empty()) throw ConfigError(cl.where("types") + ": empty");
+    std::vector<double> heights;
+    if (!cl.getString("heights").empty()) {
+      heights = numbers(cl, "heights", 2);
+      if (!(0 < heights[0] && heights[0] <= heights[1]))
+        throw ConfigError(cl.where("heights") + ": need 0 < min <= max");
+    }
     for (long i = 0; i < cl.getInt("count"); ++i) {
       const std::string& t =
           types[static_cast<std::size_t>(u01(rng) * types.size()) % types.size()];
@@ -347,7 +360,8 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
       const double width = 0.4 + 0.8 * u01(rng);
       const double depth = 0.3 + 0.5 * u01(rng);
       const double crown = 1.0 + u01(rng);
-      addObject(s, t, x, y, &cl, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw), radius, 0, yaw,
+      const double height = heights.empty() ? 0 : heights[0] + (heights[1] - heights[0]) * u01(rng);
+      addObject(s, t, x, y, &cl, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw), radius, height, yaw,
                 width, depth, 0.15, crown);
     }
   }

@@ -120,6 +120,8 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys(
            P::real("max_stop", 3, "s", 0, 100, "longest random stop"),
            P::real("facing_rate", 150, "deg/s", 1, 2000,
                    "how fast bodies turn to a new walking direction"),
+           P::real("child_share", 0, "", 0, 1,
+                   "share of children (1.0-1.45 m tall, narrower torso, shorter steps)"),
        }},
       {"object.NAME",
        {
@@ -141,6 +143,9 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys(
            P::integer("count", std::nullopt, "", 1, 100000, "random static objects"),
            P::text("area", std::nullopt, "x0 y0 x1 y1 box they stand in"),
            P::text("types", std::string("pole box bin tree"), "kinds to draw from"),
+           P::text("heights", std::string(""),
+                   "min max: object heights drawn uniformly from this range (m; empty: each "
+                   "type's default height)"),
        }},
   };
   return keys;

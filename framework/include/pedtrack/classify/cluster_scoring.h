@@ -1,0 +1,41 @@
+#pragma once
+// What the classifier plugins share: reading a model's features out of the frame's clusters (by
+// name, so a model works after any segmenter that computes its features) and turning scored
+// clusters into detections with the tracker's measurement.
+#include <string>
+#include <vector>
+
+#include "pedtrack/frame.h"
+
+namespace pedtrack::classify {
+
+/// The feature rows of a frame's clusters in a model's feature order.
+class FeatureGather {
+ public:
+  FeatureGather(std::string model_path, std::vector<std::string> model_features);
+  /// Rows of every cluster of `f` (row-major, clusters × features) whose features are all
+  /// finite; `cluster_of` maps each row to its cluster. Throws ConfigError naming the model and
+  /// the feature when the frame's segmenter does not compute one the model needs.
+  void gather(const Frame& f, std::vector<double>& rows, std::vector<int>& cluster_of);
+
+ private:
+  std::string path_;
+  std::vector<std::string> features_;
+  const std::vector<std::string>* bound_to_ = nullptr;
+  std::vector<std::size_t> column_;
+};
+
+/// Which shape a detection carries.
+enum class DetectionShape {
+  None,     ///< position only
+  Ellipse,  ///< a torso ellipse fitted to the cluster's points (2D segments)
+  Auto,     ///< Ellipse for 2D segments with ellipse features that are not legs, else None
+};
+DetectionShape parseDetectionShape(const std::string& s);  ///< "auto" | "none" | "ellipse"
+
+/// Appends to f.detections one detection per row whose score ≥ threshold: the cluster's position
+/// (or fitted ellipse centre) in the fixed frame, the score and the shape.
+void appendDetections(Frame& f, const std::vector<int>& cluster_of,
+                      const std::vector<double>& scores, double threshold, DetectionShape shape);
+
+}  // namespace pedtrack::classify

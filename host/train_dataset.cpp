@@ -1,0 +1,395 @@
+#include "train_dataset.h"
+
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/pipeline.h"
+#include "pedtrack/plugin_registry.h"
+#include "pedtrack/point_labels.h"
+#include "pedtrack/progress.h"
+#include "pedtrack/sim/simulator.h"
+#include "pedtrack/text.h"
+#ifdef PEDTRACK_WITH_ROSBAG
+#include "eval_bag.h"
+#endif
+
+namespace pedtrack::cli {
+
+namespace fs = std::filesystem;
+using classify::Label;
+using classify::SampleSet;
+using P = ParamSpec;
+
+const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& datasetKeys() {
+  static const std::vector<std::pair<std::string, std::vector<ParamSpec>>> keys = {
+      {"dataset",
+       {
+           P::text("pipeline", std::nullopt,
+                   "segmentation pipeline (its segmenter stages run; relative to this file)"),
+           P::text("features", std::string(""),
+                   "the features a model reads, space-separated (empty: all the segmenters give)"),
+           P::integer("frame_step", 1, "", 1, 100000, "use every Nth frame of each input"),
+           P::real("min_range", 0, "m", 0, 1000, "clusters nearer the sensor are left out"),
+           P::real("max_range", 0, "m", 0, 1000,
+                   "clusters farther from the sensor are left out (0: no limit)"),
+           P::real("match_distance", 0.15, "m", 0.001, 10,
+                   "a label marks the cluster whose centroid is nearest, within this"),
+           P::real("purity", 0.8, "", 0.5, 1,
+                   "sim: a cluster is a person when this share of its points is one person's, a "
+                   "non-person when at most 1 - this share is anyone's; else mixed (left out)"),
+       }},
+      {"sim.NAME",
+       {
+           P::text("scenario", std::nullopt, "scenario file (relative to this file)"),
+           P::integer("seed", -1, "", -1, 4294967295.0, "random seed (-1: the scenario's)"),
+       }},
+      {"recording.NAME",
+       {
+           P::text("file", std::nullopt, "rawlog or ROS1 bag (relative to this file)"),
+           P::choice("kind", "negative", {"negative", "positive"},
+                     "negative: a recording without people, every cluster a non-person; "
+                     "positive: clusters at labels or inside region are persons"),
+           P::text("topic", std::string(""), "scan topic of a bag (empty: its only scan topic)"),
+           P::text("labels_topic", std::string(""),
+                   "positive bag: geometry_msgs/PoseArray topic of person (leg) positions"),
+           P::text("region", std::string(""),
+                   "positive: x0 y0 x1 y1 box (sensor frame, m) where only people move"),
+           P::text("part", std::string("0 1"),
+                   "from to: the share of the recording's frames used (0 0.5: first half)"),
+       }},
+  };
+  return keys;
+}
+
+namespace {
+
+std::vector<double> numbers(const ParamSet& p, const std::string& key, std::size_t n) {
+  std::vector<double> v;
+  for (const auto& s : p.getList(key)) {
+    try {
+      std::size_t used = 0;
+      v.push_back(std::stod(s, &used));
+      if (used != s.size()) throw std::invalid_argument(s);
+    } catch (const std::exception&) {
+      throw ConfigError(p.where(key) + ": '" + s + "' is not a number");
+    }
+  }
+  if (v.size() != n)
+    throw ConfigError(p.where(key) + ": expected " + std::to_string(n) + " numbers, got " +
+                      std::to_string(v.size()));
+  return v;
+}
+
+std::string anchored(const std::string& base_dir, const std::string& path) {
+  if (path.empty() || fs::path(path).is_absolute()) return path;
+  return (fs::path(base_dir) / path).lexically_normal().string();
+}
+
+}  // namespace
+
+Dataset loadDataset(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": dataset file not found");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = preprocessPipelineText(ss.str(), path);
+  mrpt::config::CConfigFileMemory ini(text);
+  std::vector<std::string> sections;
+  ini.getAllSections(sections);
+  std::sort(sections.begin(), sections.end());
+  const std::string dir = fs::path(path).parent_path().string();
+  Dataset d;
+  d.file = path;
+  bool have_dataset = false;
+  for (const auto& sec : sections) {
+    std::string kind = sec;
+    if (sec.rfind("sim.", 0) == 0 && sec.size() > 4) kind = "sim.NAME";
+    if (sec.rfind("recording.", 0) == 0 && sec.size() > 10) kind = "recording.NAME";
+    const auto& declared = datasetKeys();
+    auto it = std::find_if(declared.begin(), declared.end(),
+                           [&](const auto& k) { return k.first == kind; });
+    if (it == declared.end())
+      throw ConfigError(path + ": [" + sec +
+                        "]: unknown section (dataset, sim.NAME, recording.NAME)");
+    std::vector<std::pair<std::string, std::string>> kv;
+    std::vector<std::string> keys;
+    ini.getAllKeys(sec, keys);
+    for (const auto& k : keys) kv.emplace_back(k, trim(ini.read_string(sec, k, "")));
+    const ParamSet p = validateSection(it->second, kv, path, sec, "a [" + kind + "] section");
+    if (kind == "dataset") {
+      have_dataset = true;
+      d.pipeline = anchored(dir, p.getString("pipeline"));
+      d.features = p.getList("features");
+      d.frame_step = p.getInt("frame_step");
+      d.min_range = p.getDouble("min_range");
+      d.max_range = p.getDouble("max_range");
+      d.match_distance = p.getDouble("match_distance");
+      d.purity = p.getDouble("purity");
+    } else if (kind == "sim.NAME") {
+      DatasetInput in;
+      in.kind = DatasetInput::Kind::Sim;
+      in.name = sec;
+      in.file = anchored(dir, p.getString("scenario"));
+      in.seed = p.getInt("seed");
+      d.inputs.push_back(in);
+    } else {
+      DatasetInput in;
+      in.kind = p.getString("kind") == "positive" ? DatasetInput::Kind::Positive
+                                                  : DatasetInput::Kind::Negative;
+      in.name = sec;
+      in.file = anchored(dir, p.getString("file"));
+      in.topic = p.getString("topic");
+      in.labels_topic = p.getString("labels_topic");
+      if (!p.getString("region").empty()) in.region = numbers(p, "region", 4);
+      const auto part = numbers(p, "part", 2);
+      in.part_from = part[0], in.part_to = part[1];
+      if (!(0 <= in.part_from && in.part_from < in.part_to && in.part_to <= 1))
+        throw ConfigError(p.where("part") + ": need 0 <= from < to <= 1");
+      if (in.kind == DatasetInput::Kind::Positive && in.labels_topic.empty() && in.region.empty())
+        throw ConfigError(p.where("kind") +
+                          ": a positive recording needs labels_topic or region (which clusters "
+                          "are people)");
+      d.inputs.push_back(in);
+    }
+  }
+  if (!have_dataset) throw ConfigError(path + ": [dataset] pipeline: missing required section");
+  if (d.inputs.empty())
+    throw ConfigError(path + ": no [sim.NAME] or [recording.NAME] section: nothing to learn from");
+  return d;
+}
+
+std::string Dataset::describe() const {
+  std::ostringstream o;
+  o << "pipeline " << pipeline << "; frame_step " << frame_step;
+  if (min_range > 0 || max_range > 0) o << "; range " << min_range << "-" << max_range << " m";
+  for (const auto& in : inputs) {
+    o << "; " << in.name << ": ";
+    if (in.kind == DatasetInput::Kind::Sim) {
+      o << "sim " << in.file << (in.seed >= 0 ? " seed " + std::to_string(in.seed) : "");
+      continue;
+    }
+    o << (in.kind == DatasetInput::Kind::Positive ? "positive " : "negative ") << in.file;
+    if (!in.topic.empty()) o << " " << in.topic;
+    if (!in.labels_topic.empty()) o << " labels " << in.labels_topic;
+    if (!in.region.empty())
+      o << " region " << in.region[0] << " " << in.region[1] << " " << in.region[2] << " "
+        << in.region[3];
+    if (in.part_from > 0 || in.part_to < 1) o << " part " << in.part_from << "-" << in.part_to;
+  }
+  return o.str();
+}
+
+namespace {
+
+// The source and segmenter stages of a pipeline. Its classifier stages (the model being trained
+// may not exist yet) and tracker stages are dropped before the file is validated, so a detection
+// pipeline trains the model it will use on exactly its own segmentation.
+PipelineOverrides segmentationOnly(PipelineOverrides ov, const std::string& file,
+                                   const PluginRegistry& registry) {
+  std::ifstream in(file);
+  if (!in) throw ConfigError(file + ": pipeline file not found");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  mrpt::config::CConfigFileMemory ini(preprocessPipelineText(ss.str(), file));
+  std::string keep;
+  for (const auto& st : splitList(ini.read_string("pipeline", "stages", ""))) {
+    const std::string plugin = trim(ini.read_string(st, "plugin", ""));
+    if (st == "source" || plugin.empty() || registry.get(plugin).category == Category::Segmenter)
+      keep += (keep.empty() ? "" : " ") + st;
+  }
+  ov.sets.insert(ov.sets.begin(), "pipeline.stages=" + keep);
+  return ov;
+}
+
+struct Segmentation {
+  Segmentation(const Dataset& d, const PipelineOverrides& ov, const PluginRegistry& registry)
+      : config(
+            PipelineConfig::load(d.pipeline, segmentationOnly(ov, d.pipeline, registry), registry)),
+        pipeline(config),
+        segmenters(pipeline.stages()) {
+    if (segmenters.empty())
+      throw ConfigError(d.pipeline + ": [pipeline] stages: no segmenter to make clusters");
+  }
+  void process(Frame& f) {
+    for (Stage* s : segmenters) s->process(f);
+  }
+  PipelineConfig config;
+  Pipeline pipeline;
+  std::vector<Stage*> segmenters;
+};
+
+// Adds the frame's clusters that `label` labels (nullopt: left out).
+template <class LabelFn>
+void addClusters(const Dataset& d, const Frame& f, SampleSet& out, CollectStats& st,
+                 LabelFn label) {
+  if (f.clusters.empty()) return;
+  if (!f.cluster_feature_names)
+    throw ConfigError(d.pipeline + ": the segmenters give the clusters no features");
+  if (out.features.empty()) out.features = *f.cluster_feature_names;
+  if (*f.cluster_feature_names != out.features)
+    throw ConfigError(d.pipeline + ": the segmenters' features changed between frames");
+  const auto mount = f.sensorMount();
+  for (std::size_t c = 0; c < f.clusters.size(); ++c) {
+    const Cluster& cl = f.clusters[c];
+    const double r = std::hypot(cl.cx - mount.x(), cl.cy - mount.y());
+    if (r < d.min_range || (d.max_range > 0 && r > d.max_range)) {
+      ++st.out_of_range;
+      continue;
+    }
+    if (cl.features.size() != out.dims()) continue;
+    bool finite = true;
+    for (double v : cl.features) finite = finite && std::isfinite(v);
+    if (!finite) continue;
+    const int l = label(c);
+    if (l >= 0) out.add(cl.features.data(), Label(l));
+  }
+}
+
+void collectSim(const Dataset& d, const DatasetInput& in, const PluginRegistry& reg, bool progress,
+                SampleSet& out, CollectStats& st) {
+  Segmentation seg(d, PipelineOverrides{}, reg);
+  sim::Simulator sim(sim::loadScenario(in.file, in.seed));
+  sim.setPointTruth(true);
+  Progress prog(in.name, progress);
+  sim::SimFrame sf;
+  for (std::size_t k = 0; sim.next(sf); ++k) {
+    if (k % std::size_t(d.frame_step)) continue;
+    Frame f;
+    f.index = sf.index;
+    f.t = sf.t;
+    f.robot_pose = sf.robot_odometry;
+    f.observations.push_back(sf.observations.back());
+    f.sensor_pose = sf.robot_odometry + sim.scenario().sensor.mount;
+    seg.process(f);
+    ++st.frames;
+    std::map<std::int32_t, std::size_t> owners;
+    addClusters(d, f, out, st, [&](std::size_t c) {
+      const auto& idx = f.clusters[c].indices;
+      owners.clear();
+      std::size_t people = 0;
+      for (std::uint32_t i : idx) {
+        const std::int32_t o = i < sf.point_truth.size() ? sf.point_truth[i] : 0;
+        if (o > 0) ++owners[o], ++people;
+      }
+      std::size_t top = 0;
+      for (const auto& [o, n] : owners) top = std::max(top, n);
+      const double n = double(std::max<std::size_t>(idx.size(), 1));
+      if (top >= d.purity * n) return int(Label::Person);
+      if (people <= (1 - d.purity) * n) return int(Label::NonPerson);
+      ++st.mixed;
+      return -1;
+    });
+    prog.update(k + 1, double(k + 1) / double(std::max<std::size_t>(sim.frameCount(), 1)));
+  }
+  prog.done(sim.frameCount());
+}
+
+void collectRecording(const Dataset& d, const DatasetInput& in, const PluginRegistry& reg,
+                      bool progress, SampleSet& out, CollectStats& st) {
+  PipelineOverrides ov;
+  ov.input = in.file;
+  ov.topic = in.topic;
+  Segmentation seg(d, ov, reg);
+  std::vector<eval::TimedObjects> labels;
+  if (in.kind == DatasetInput::Kind::Positive && !in.labels_topic.empty()) {
+#ifdef PEDTRACK_WITH_ROSBAG
+    labels = readBagLabels(in.file, in.topic, in.labels_topic).scans;
+#else
+    throw ConfigError(in.file + ": labels_topic needs ROS bag support (PEDTRACK_WITH_ROSBAG)");
+#endif
+  }
+  Progress prog(in.name, progress);
+  Frame f;
+  std::size_t k = 0;
+  for (;; ++k) {
+    f = Frame();
+    f.index = k;
+    if (!seg.pipeline.source().next(f)) break;
+    const double at = seg.pipeline.source().progress();
+    prog.update(k + 1, at);
+    if (at >= 0 && at <= in.part_from) continue;
+    if (at > in.part_to) break;
+    if (k % std::size_t(d.frame_step)) continue;
+    try {
+      seg.process(f);
+    } catch (const DataError& e) {
+      std::cerr << "warning: " << in.name << " frame " << k << ": " << e.what() << "\n";
+      continue;
+    }
+    ++st.frames;
+    if (in.kind == DatasetInput::Kind::Negative) {
+      addClusters(d, f, out, st, [](std::size_t) { return int(Label::NonPerson); });
+      continue;
+    }
+    // Positives: cluster centroids in the sensor frame, against labels or the region.
+    const auto mount = f.sensorMount();
+    std::vector<std::pair<double, double>> at_sensor;
+    for (const Cluster& c : f.clusters) {
+      double x, y, z;
+      mount.inverseComposePoint(c.cx, c.cy, c.cz, x, y, z);
+      at_sensor.emplace_back(x, y);
+    }
+    std::vector<int> label(f.clusters.size(), -1);
+    if (!in.region.empty()) {
+      for (std::size_t c = 0; c < at_sensor.size(); ++c) {
+        const auto [x, y] = at_sensor[c];
+        if (x >= in.region[0] && x <= in.region[2] && y >= in.region[1] && y <= in.region[3])
+          label[c] = int(Label::Person);
+      }
+    } else {
+      auto it = std::lower_bound(labels.begin(), labels.end(), f.t - 1e-4,
+                                 [](const eval::TimedObjects& t, double v) { return t.t < v; });
+      if (it != labels.end() && it->t <= f.t + 1e-4) {
+        // Greedy nearest pairs, each cluster marked by at most one label.
+        for (const auto& o : it->objects) {
+          ++st.labels;
+          int best = -1;
+          double best_d = d.match_distance;
+          for (std::size_t c = 0; c < at_sensor.size(); ++c) {
+            const double dist = std::hypot(at_sensor[c].first - o.x, at_sensor[c].second - o.y);
+            if (label[c] < 0 && dist <= best_d) best = int(c), best_d = dist;
+          }
+          if (best >= 0) label[std::size_t(best)] = int(Label::Person), ++st.labels_matched;
+        }
+      }
+    }
+    addClusters(d, f, out, st, [&](std::size_t c) { return label[c]; });
+  }
+  prog.done(k);
+}
+
+}  // namespace
+
+SampleSet collectSamples(const Dataset& d, const std::vector<std::string>& plugin_path,
+                         bool progress, CollectStats& st) {
+  PluginRegistry registry(PluginRegistry::defaultSearchPath(plugin_path));
+  SampleSet all;
+  for (const auto& in : d.inputs) {
+    SampleSet s;
+    const std::size_t before_mixed = st.mixed;
+    if (in.kind == DatasetInput::Kind::Sim)
+      collectSim(d, in, registry, progress, s, st);
+    else
+      collectRecording(d, in, registry, progress, s, st);
+    if (progress)
+      std::cerr << in.name << ": " << s.count(Label::Person) << " persons, "
+                << s.count(Label::NonPerson) << " non-persons"
+                << (st.mixed > before_mixed
+                        ? ", " + std::to_string(st.mixed - before_mixed) + " mixed left out"
+                        : std::string())
+                << "\n";
+    if (s.size()) all.append(s);
+  }
+  if (all.size() == 0) throw DataError(d.pipeline + ": the inputs produced no labelled cluster");
+  return all;
+}
+
+}  // namespace pedtrack::cli

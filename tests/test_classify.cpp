@@ -1,0 +1,243 @@
+// Classifier cores (classify/): P2's Mahalanobis k-NN and quality Q, the RBF SVM and its Platt
+// calibration, model files, ROC and AUC. Numbers are derived by hand in the comments.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+
+#include "pedtrack/classify/knn.h"
+#include "pedtrack/classify/model_file.h"
+#include "pedtrack/classify/roc.h"
+#include "pedtrack/classify/svm.h"
+#include "pedtrack/errors.h"
+#include "test_support.h"
+
+using namespace pedtrack;
+using namespace pedtrack::classify;
+
+namespace {
+
+// Persons at the corners of a 2 m square around (1, 1); non-persons at the corners of a 4 m
+// square around (12, 2). Per class the covariance is diag(4/3, 4/3) and diag(16/3, 16/3), so
+// P2's Σ = (Σ_P + Σ_P̄)/2 = (10/3)·I and d² = 0.3·|x − x'|².
+SampleSet twoSquares() {
+  SampleSet s;
+  s.features = {"a", "b"};
+  for (auto [x, y] : {std::pair{0., 0.}, {2., 0.}, {0., 2.}, {2., 2.}}) {
+    const double v[2] = {x, y};
+    s.add(v, Label::Person);
+  }
+  for (auto [x, y] : {std::pair{10., 0.}, {14., 0.}, {10., 4.}, {14., 4.}}) {
+    const double v[2] = {x, y};
+    s.add(v, Label::NonPerson);
+  }
+  return s;
+}
+
+KnnClassifier knn(KnnWeighting w, KnnMetric m = KnnMetric::Mahalanobis) {
+  const SampleSet s = twoSquares();
+  KnnOptions o;
+  o.k = 5;
+  o.metric = m;
+  o.weighting = w;
+  return KnnClassifier(s, KnnMetricStats::fit(s), o);
+}
+
+}  // namespace
+
+TEST_CASE("Mahalanobis metric uses the average of the two class covariances (P2 eq. 5)") {
+  const SampleSet s = twoSquares();
+  const KnnMetricStats st = KnnMetricStats::fit(s);
+  CHECK(st.sigma(0, 0) == Approx(10.0 / 3));
+  CHECK(st.sigma(1, 1) == Approx(10.0 / 3));
+  CHECK(st.sigma(0, 1) == Approx(0).margin(1e-12));
+  const auto k = knn(KnnWeighting::Unit);
+  const double a[2] = {0, 0}, b[2] = {1, 2};
+  CHECK(k.distanceSquared(a, b) == Approx(0.3 * 5));
+
+  // A correlated Σ = [[2, 1], [1, 2]]: Σ⁻¹ = [[2, −1], [−1, 2]] / 3.
+  KnnMetricStats corr;
+  corr.sigma = (Eigen::Matrix2d() << 2, 1, 1, 2).finished();
+  corr.stddev = Eigen::Vector2d(1, 1);
+  const KnnClassifier c(s, corr, KnnOptions{});
+  const double o[2] = {0, 0}, e1[2] = {1, 0}, d1[2] = {1, 1}, d2[2] = {1, -1};
+  CHECK(c.distanceSquared(o, e1) == Approx(2.0 / 3));
+  CHECK(c.distanceSquared(o, d1) == Approx(2.0 / 3));  // along the correlation: near
+  CHECK(c.distanceSquared(o, d2) == Approx(2.0));      // across it: far
+}
+
+TEST_CASE("quality Q under each vote weighting on a hand-made two-class set") {
+  // Query (1, 1): its 5 nearest are the 4 persons (d² = 0.3·2 = 0.6) and the non-person
+  // (10, 0) (d² = 0.3·82 = 24.6).
+  const double q[2] = {1, 1};
+  const double dp = std::sqrt(0.6), dn = std::sqrt(24.6);
+  CHECK(knn(KnnWeighting::Unit).quality(q) == Approx(0.8));
+  CHECK(knn(KnnWeighting::InverseDistance).quality(q) == Approx((4 / dp) / (4 / dp + 1 / dn)));
+  // P2 eq. 6 as printed: votes equal to d², so the far non-person outvotes four near persons.
+  CHECK(knn(KnnWeighting::SquaredDistance).quality(q) == Approx(2.4 / (2.4 + 24.6)));
+  // A query among the non-persons.
+  const double far[2] = {12, 2};
+  CHECK(knn(KnnWeighting::Unit).quality(far) == Approx(0.2));
+  // Minkowski: each feature scaled by its σ over all prototypes.
+  const auto mk = knn(KnnWeighting::Unit, KnnMetric::Minkowski);
+  const double a[2] = {0, 0}, b[2] = {1, 0};
+  const double sd = mk.stats().stddev[0];
+  CHECK(mk.distanceSquared(a, b) == Approx(1 / (sd * sd)));
+}
+
+TEST_CASE("the KD-tree finds the same neighbours as a linear scan") {
+  SampleSet s;
+  s.features = {"a", "b", "c"};
+  unsigned state = 7;
+  auto rnd = [&] { return (state = state * 1103515245u + 12345u) / 4294967296.0; };
+  for (int i = 0; i < 3000; ++i) {
+    const double v[3] = {rnd(), rnd() * 3, rnd() + (i % 2)};
+    s.add(v, Label(i % 2));
+  }
+  KnnOptions tree, scan;
+  scan.linear_below = 1000000;
+  const KnnClassifier a(s, KnnMetricStats::fit(s), tree), b(s, KnnMetricStats::fit(s), scan);
+  for (int i = 0; i < 200; ++i) {
+    const double v[3] = {rnd(), rnd() * 3, rnd() * 2};
+    REQUIRE(a.quality(v) == Approx(b.quality(v)).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("an RBF SVM separates a separable set and its calibrated probability follows") {
+  SampleSet s;
+  s.features = {"u", "v"};
+  // Two interleaved rings: not linearly separable, separable with an RBF kernel.
+  for (int i = 0; i < 120; ++i) {
+    const double a = i * 0.3;
+    const double in[2] = {0.5 * std::cos(a), 0.5 * std::sin(a)};
+    const double out[2] = {2.0 * std::cos(a), 2.0 * std::sin(a)};
+    s.add(in, Label::Person);
+    s.add(out, Label::NonPerson);
+  }
+  SvmTraining t;
+  t.folds = 3;
+  const SvmClassifier svm = SvmClassifier::train(s, t);
+  std::vector<double> p;
+  svm.probability(s.x.data(), s.size(), p);
+  for (std::size_t i = 0; i < s.size(); ++i) REQUIRE((p[i] >= 0.5) == (s.y[i] == Label::Person));
+  const double centre[2] = {0, 0}, outside[2] = {3, 0};
+  std::vector<double> pc, po;
+  svm.probability(centre, 1, pc);
+  svm.probability(outside, 1, po);
+  CHECK(pc[0] > 0.9);
+  CHECK(po[0] < 0.1);
+}
+
+TEST_CASE("Platt's sigmoid recovers the curve its labels were drawn from") {
+  // At each f, 1000 samples of which round(1000·σ(−2f)) are persons: the fit returns a ≈ −2.
+  std::vector<double> f;
+  std::vector<Label> y;
+  for (double v = -2; v <= 2.001; v += 0.25) {
+    const int pos = int(std::lround(1000 / (1 + std::exp(-2 * v))));
+    for (int i = 0; i < 1000; ++i) {
+      f.push_back(v);
+      y.push_back(i < pos ? Label::Person : Label::NonPerson);
+    }
+  }
+  const PlattSigmoid s = PlattSigmoid::fit(f, y);
+  CHECK(s.a == Approx(-2).margin(0.02));
+  CHECK(s.b == Approx(0).margin(0.02));
+  CHECK(s(0) == Approx(0.5).margin(0.01));
+}
+
+TEST_CASE("confusion matrix, ROC and AUC by hand") {
+  const std::vector<double> sc{0.9, 0.8, 0.7, 0.1};
+  const std::vector<Label> y{Label::Person, Label::NonPerson, Label::Person, Label::NonPerson};
+  const Confusion c = confusionAt(sc, y, 0.75);
+  CHECK(c.tp == 1);
+  CHECK(c.fn == 1);
+  CHECK(c.fp == 1);
+  CHECK(c.tn == 1);
+  // Pairs (person, non-person) ordered right: 0.9 > 0.8, 0.9 > 0.1, 0.7 > 0.1 → 3 of 4.
+  CHECK(rocAuc(sc, y) == Approx(0.75));
+  CHECK(rocAuc({0.5, 0.5}, {Label::Person, Label::NonPerson}) == Approx(0.5));  // a tie: ½
+  const auto roc = rocCurve(sc, y);
+  REQUIRE(roc.size() == 5);
+  CHECK(roc.back().fpr == 1);
+  CHECK(roc.back().tpr == 1);
+  CHECK(bestAtFpr(roc, 0.0).tpr == Approx(0.5));
+  CHECK(bestAtTpr(roc, 1.0).fpr == Approx(0.5));
+}
+
+TEST_CASE("subsampling keeps a rare class whole and the order of the samples") {
+  SampleSet s;
+  s.features = {"i"};
+  for (int i = 0; i < 1000; ++i) {
+    const double v = i;
+    s.add(&v, i % 10 == 0 ? Label::Person : Label::NonPerson);
+  }
+  const SampleSet t = s.subsample(300, 1);
+  CHECK(t.size() == 300);
+  CHECK(t.count(Label::Person) == 100);  // all of them: fewer than half the budget
+  for (std::size_t i = 1; i < t.size(); ++i) REQUIRE(t.row(i)[0] > t.row(i - 1)[0]);
+  CHECK(s.subsample(300, 1).x == t.x);  // deterministic for a seed
+}
+
+TEST_CASE("train, save, load: identical predictions; bad model files are one-line errors") {
+  const std::string dir = test::freshDir("classify_models");
+  SampleSet s = twoSquares();
+  for (int i = 0; i < 40; ++i) {  // more samples for the SVM's folds
+    const double p[2] = {1 + 0.05 * (i % 7), 1 - 0.04 * (i % 5)};
+    const double n[2] = {12 + 0.06 * (i % 6), 2 + 0.05 * (i % 4)};
+    s.add(p, Label::Person);
+    s.add(n, Label::NonPerson);
+  }
+  ModelInfo info;
+  info.features = s.features;
+  info.command = "test";
+  info.kind = "knn";
+  const KnnClassifier k(s, KnnMetricStats::fit(s), KnnOptions{});
+  saveKnnModel(dir + "/k.yml", info, k);
+  info.kind = "svm";
+  SvmTraining t;
+  t.folds = 3;
+  const SvmClassifier v = SvmClassifier::train(s, t);
+  saveSvmModel(dir + "/s.yml", info, v);
+
+  const auto kl = loadScorer(dir + "/k.yml");
+  const auto sl = loadScorer(dir + "/s.yml");
+  CHECK(kl->info().command == "test");
+  CHECK(kl->info().features == s.features);
+  std::vector<double> q;
+  for (int i = 0; i < 50; ++i) q.insert(q.end(), {0.3 * i, 0.1 * i});
+  std::vector<double> ks, ss, sv;
+  kl->score(q.data(), 50, ks);
+  sl->score(q.data(), 50, ss);
+  v.probability(q.data(), 50, sv);
+  for (int i = 0; i < 50; ++i) {
+    REQUIRE(ks[i] == k.quality(&q[2 * i]));
+    REQUIRE(ss[i] == Approx(sv[i]).epsilon(1e-6));
+  }
+
+  auto expectError = [&](const std::string& path, const std::string& what) {
+    try {
+      loadScorer(path);
+      FAIL("no error for " << path);
+    } catch (const ConfigError& e) {
+      const std::string m = e.what();
+      CHECK(m.find(path) == 0);
+      CHECK(m.find(what) != std::string::npos);
+      CHECK(m.find('\n') == std::string::npos);
+    }
+  };
+  const std::string text = test::readFile(dir + "/s.yml");
+  test::writeFile(dir + "/truncated.yml", text.substr(0, text.size() / 2));
+  expectError(dir + "/truncated.yml", "truncated");
+  test::writeFile(dir + "/garbage.yml", "\x01\x02 not yaml {{{ [");
+  expectError(dir + "/garbage.yml", "model");
+  std::string v2 = test::readFile(dir + "/k.yml");
+  v2.replace(v2.find("version: 1"), 10, "version: 9");
+  test::writeFile(dir + "/v9.yml", v2);
+  expectError(dir + "/v9.yml", "version 9");
+  expectError(dir + "/missing.yml", "not found");
+  try {
+    loadKnnModel(dir + "/s.yml");
+    FAIL("an SVM loaded as k-NN");
+  } catch (const ConfigError& e) {
+    CHECK(std::string(e.what()).find("'svm' model, not 'knn'") != std::string::npos);
+  }
+}

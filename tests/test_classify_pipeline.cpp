@@ -1,0 +1,165 @@
+// Classifiers end to end: the shipped detection pipelines with the shipped models, `pedtrack
+// train` and `pedtrack eval --model` on held-out simulated scenes and on leg_tracker's real bags.
+#include <catch2/catch.hpp>
+#include <regex>
+
+#include "test_support.h"
+
+using namespace pedtrack;
+using namespace pedtrack::test;
+
+namespace {
+
+const std::string kConfigs = std::string(PEDTRACK_SOURCE_DIR) + "/configs/";
+const std::string kModels = std::string(PEDTRACK_SOURCE_DIR) + "/models/";
+
+// `pedtrack eval --model ... --json` for one model: its numbers.
+std::string evalModel(const std::string& model, const std::vector<std::string>& data) {
+  std::vector<std::string> args{"eval", "--model", model, "--json"};
+  args.insert(args.end(), data.begin(), data.end());
+  const auto r = runHost(args);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  return r.output;
+}
+
+std::string withoutCreated(const std::string& text) {
+  return std::regex_replace(text, std::regex("created: [^\n]*\n"), "");
+}
+
+}  // namespace
+
+TEST_CASE("detect_3d.ini: the k-NN model scores clusters into detections of people", "[classify]") {
+  const std::string dir = freshDir("classify_detect3d");
+  const auto r = runHost({"run", kConfigs + "detect_3d.ini", "--out", dir, "--max-frames", "40",
+                          "-q", "--no-point-labels"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto rows = lines(readFile(dir + "/detections.csv"));
+  REQUIRE(rows.size() > 100);
+  CHECK(rows[0] == "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const double score = std::stod(rows[i].substr([&] {
+      std::size_t p = 0;
+      for (int c = 0; c < 6; ++c) p = rows[i].find(',', p) + 1;
+      return p;
+    }()));
+    REQUIRE(score >= 0.5);  // Q >= Q_P
+    REQUIRE(score <= 1.0);
+  }
+  const auto ev = runHost({"eval", "--truth", dir + "/truth.csv", "--detections",
+                           dir + "/detections.csv", "--threshold", "0.5", "--json"});
+  INFO(ev.output);
+  REQUIRE(ev.exit_code == 0);
+  // Measured on this held-out scene (seed 301, people up to 25 m): recall 0.80, precision 0.71.
+  CHECK(jsonNumber(ev.output, "recall") >= 0.75);
+  CHECK(jsonNumber(ev.output, "precision") >= 0.65);
+}
+
+TEST_CASE("detect_torso.ini: SVM detections carry the torso ellipse", "[classify]") {
+  const std::string dir = freshDir("classify_torso");
+  const auto r = runHost({"run", kConfigs + "detect_torso.ini", "--out", dir, "--max-frames", "40",
+                          "-q", "--no-point-labels"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto rows = lines(readFile(dir + "/detections.csv"));
+  REQUIRE(rows.size() > 100);
+  std::size_t shaped = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) shaped += rows[i].back() != ',';
+  CHECK(shaped > rows.size() / 2);
+}
+
+TEST_CASE("pedtrack train: deterministic for a seed, and the model it writes is used",
+          "[classify]") {
+  const std::string dir = freshDir("classify_train");
+  std::vector<std::string> args{"train",
+                                "knn",
+                                "--pipeline",
+                                kConfigs + "detect_3d.ini",
+                                "--sim",
+                                kConfigs + "scenarios/classify_scene.ini",
+                                "--frame-step",
+                                "20",
+                                "--min-range",
+                                "1",
+                                "--max-range",
+                                "20",
+                                "--features",
+                                "h w d v lambda rho",
+                                "--max-prototypes",
+                                "300",
+                                "-q"};
+  args.insert(args.end(), {"--out", dir + "/a.yml"});
+  const auto ra = runHost(args);
+  INFO(ra.output);
+  REQUIRE(ra.exit_code == 0);
+  const std::string ma = readFile(dir + "/a.yml");
+  const auto rb = runHost(args);
+  REQUIRE(rb.exit_code == 0);
+  CHECK(withoutCreated(ma) == withoutCreated(readFile(dir + "/a.yml")));
+  CHECK(ma.find("command: \"pedtrack train knn") != std::string::npos);
+  CHECK(ma.find("features:") != std::string::npos);
+  const auto run = runHost({"run", kConfigs + "detect_3d.ini", "--set",
+                            "classify.model=" + dir + "/a.yml", "--max-frames", "5", "-q"});
+  CHECK(run.exit_code == 0);
+}
+
+TEST_CASE("a corrupt, truncated or wrong-version model stops the run with exit 2", "[classify]") {
+  const std::string dir = freshDir("classify_bad_model");
+  const std::string good = readFile(kModels + "person3d_knn.yml");
+  writeFile(dir + "/truncated.yml", good.substr(0, good.size() / 3));
+  writeFile(dir + "/garbage.yml", "%YAML:1.0\n---\nformat: [unclosed\n");
+  std::string v2 = good;
+  v2.replace(v2.find("version: 1"), 10, "version: 2");
+  writeFile(dir + "/v2.yml", v2);
+  for (const char* bad : {"truncated.yml", "garbage.yml", "v2.yml"}) {
+    const std::string path = dir + "/" + bad;
+    const auto r = runHost({"run", kConfigs + "detect_3d.ini", "--set", "classify.model=" + path,
+                            "--max-frames", "1", "-q"});
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find(path) != std::string::npos);
+    CHECK(lines(r.output).size() == 1);
+  }
+  const auto t =
+      runHost({"train", "knn", "--samples", dir + "/garbage.yml", "--out", dir + "/x.yml"});
+  CHECK(t.exit_code == 2);
+}
+
+TEST_CASE("held-out simulated 3D scenes: k-NN and SVM confusion and AUC", "[classify]") {
+  const std::string data = kConfigs + "training/person3d_test.ini";
+  for (const char* m : {"person3d_knn.yml", "person3d_svm.yml"}) {
+    const std::string out = evalModel(kModels + m, {"--dataset", data});
+    INFO(m << ": " << out);
+    CHECK(jsonNumber(out, "persons") > 2000);
+    CHECK(jsonNumber(out, "auc") >= 0.92);
+    CHECK(jsonNumber(out, "detection_rate") >= 0.88);
+    CHECK(jsonNumber(out, "false_positive_rate") <= 0.18);
+  }
+}
+
+TEST_CASE("held-out simulated torso scans: P4's torso SVM", "[classify]") {
+  const std::string out =
+      evalModel(kModels + "torso_svm.yml", {"--dataset", kConfigs + "training/torso_test.ini"});
+  CHECK(jsonNumber(out, "auc") >= 0.95);
+  CHECK(jsonNumber(out, "detection_rate") >= 0.88);
+  CHECK(jsonNumber(out, "false_positive_rate") <= 0.08);
+}
+
+TEST_CASE("real legs: leg_tracker positives 6-7 and the second half of negative_2.bag",
+          "[classify][data]") {
+#ifndef PEDTRACK_WITH_ROSBAG
+  WARN("built without ROS bag support: real legs not scored");
+  return;
+#endif
+  const std::string data = sharedDataDir();
+  requireData(data.empty() ? "" : data + "/leg_tracker/negative_2.bag");
+  setenv("PEDTRACK_DATA", data.c_str(), 1);
+  for (const char* m : {"legs_knn.yml", "legs_svm.yml"}) {
+    const std::string out =
+        evalModel(kModels + m, {"--dataset", kConfigs + "training/legs_test.ini"});
+    INFO(m << ": " << out);
+    CHECK(jsonNumber(out, "persons") == 688);  // every labelled leg of bags 6-7 is a segment
+    CHECK(jsonNumber(out, "auc") >= 0.88);
+  }
+}
