@@ -135,6 +135,9 @@ classify::SampleSet loadSamples(const Dataset* d, const std::string& samples_csv
     described = d->describe();
     if (progress)
       std::cerr << "collected " << s.size() << " samples from " << st.frames << " frames"
+                << (st.out_of_range ? ", " + std::to_string(st.out_of_range) +
+                                          " clusters outside the range left out"
+                                    : std::string())
                 << (st.labels ? ", " + std::to_string(st.labels_matched) + "/" +
                                     std::to_string(st.labels) + " labels matched a cluster"
                               : std::string())

@@ -71,23 +71,6 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& datasetKeys()
 
 namespace {
 
-std::vector<double> numbers(const ParamSet& p, const std::string& key, std::size_t n) {
-  std::vector<double> v;
-  for (const auto& s : p.getList(key)) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stod(s, &used));
-      if (used != s.size()) throw std::invalid_argument(s);
-    } catch (const std::exception&) {
-      throw ConfigError(p.where(key) + ": '" + s + "' is not a number");
-    }
-  }
-  if (v.size() != n)
-    throw ConfigError(p.where(key) + ": expected " + std::to_string(n) + " numbers, got " +
-                      std::to_string(v.size()));
-  return v;
-}
-
 std::string anchored(const std::string& base_dir, const std::string& path) {
   if (path.empty() || fs::path(path).is_absolute()) return path;
   return (fs::path(base_dir) / path).lexically_normal().string();
@@ -148,8 +131,8 @@ Dataset loadDataset(const std::string& path) {
       in.file = anchored(dir, p.getString("file"));
       in.topic = p.getString("topic");
       in.labels_topic = p.getString("labels_topic");
-      if (!p.getString("region").empty()) in.region = numbers(p, "region", 4);
-      const auto part = numbers(p, "part", 2);
+      if (!p.getString("region").empty()) in.region = p.getNumbers("region", 4);
+      const auto part = p.getNumbers("part", 2);
       in.part_from = part[0], in.part_to = part[1];
       if (!(0 <= in.part_from && in.part_from < in.part_to && in.part_to <= 1))
         throw ConfigError(p.where("part") + ": need 0 <= from < to <= 1");

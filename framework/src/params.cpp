@@ -215,6 +215,23 @@ std::vector<std::string> ParamSet::getList(const std::string& key) const {
   return splitList(getString(key));
 }
 
+std::vector<double> ParamSet::getNumbers(const std::string& key, std::size_t n) const {
+  std::vector<double> out;
+  std::string text = getString(key);
+  std::replace(text.begin(), text.end(), ';', ' ');
+  for (const auto& tok : splitList(text)) {
+    char* end = nullptr;
+    const double v = std::strtod(tok.c_str(), &end);
+    if (end == tok.c_str() || *end)
+      throw ConfigError(where(key) + ": '" + tok + "' is not a number");
+    out.push_back(v);
+  }
+  if (n && out.size() != n)
+    throw ConfigError(where(key) + ": expected " + std::to_string(n) + " numbers, got " +
+                      std::to_string(out.size()));
+  return out;
+}
+
 ParamSet validateSection(const std::vector<ParamSpec>& specs,
                          const std::vector<std::pair<std::string, std::string>>& given,
                          const std::string& file, const std::string& section,

@@ -55,6 +55,9 @@ class ParamSet {
   bool getBool(const std::string& key) const;
   /// Splits a list value on whitespace and commas.
   std::vector<std::string> getList(const std::string& key) const;
+  /// The value as numbers separated by white space, commas or semicolons; exactly `n` of them
+  /// unless n is 0. ConfigError naming the key for a non-number or a wrong count.
+  std::vector<double> getNumbers(const std::string& key, std::size_t n = 0) const;
 
   const std::string& file() const { return file_; }
   const std::string& section() const { return section_; }

@@ -93,4 +93,22 @@ void appendDetections(Frame& f, const std::vector<int>& cluster_of,
   }
 }
 
+ParamSpec detectionShapeParam() {
+  return ParamSpec::choice("shape", "auto", {"auto", "none", "ellipse"},
+                           "detection shape: ellipse = torso ellipse fitted to a 2D segment; "
+                           "auto: ellipse for torso-height segments, none for legs and 3D "
+                           "clusters");
+}
+
+ScoringClassifier::ScoringClassifier(const std::string& model_path,
+                                     std::vector<std::string> model_features, double threshold,
+                                     DetectionShape shape)
+    : gather_(model_path, std::move(model_features)), threshold_(threshold), shape_(shape) {}
+
+void ScoringClassifier::process(Frame& f) {
+  gather_.gather(f, rows_, cluster_of_);
+  score(rows_.data(), cluster_of_.size(), scores_);
+  appendDetections(f, cluster_of_, scores_, threshold_, shape_);
+}
+
 }  // namespace pedtrack::classify

@@ -43,23 +43,6 @@ bool naturalLess(const std::string& a, const std::string& b) {
   return a.size() - i < b.size() - j;
 }
 
-std::vector<double> numbers(const ParamSet& p, const std::string& key, std::size_t n) {
-  std::vector<double> out;
-  std::string text = p.getString(key);
-  std::replace(text.begin(), text.end(), ';', ' ');
-  for (const auto& tok : splitList(text)) {
-    char* end = nullptr;
-    const double v = std::strtod(tok.c_str(), &end);
-    if (end == tok.c_str() || *end)
-      throw ConfigError(p.where(key) + ": '" + tok + "' is not a number");
-    out.push_back(v);
-  }
-  if (n && out.size() != n)
-    throw ConfigError(p.where(key) + ": expected " + std::to_string(n) + " numbers, got " +
-                      std::to_string(out.size()));
-  return out;
-}
-
 MotionLimits limits(const ParamSet& p) {
   MotionLimits l;
   l.speed = p.getDouble("speed");
@@ -91,7 +74,7 @@ std::string personScript(const ParamSet& p, unsigned long seed, int id) {
     return p.getString("script");
   }
   if (path == "waypoints") {
-    const auto v = numbers(p, "waypoints", 0);
+    const auto v = p.getNumbers("waypoints", 0);
     if (v.empty() || v.size() % 2)
       throw ConfigError(p.where("waypoints") + ": expected pairs 'x y; x y; ...'");
     std::ostringstream os;
@@ -103,7 +86,7 @@ std::string personScript(const ParamSet& p, unsigned long seed, int id) {
   if (path == "random") {
     const double x = p.getDouble("x"), y = p.getDouble("y");
     std::vector<double> a{x - 3, y - 3, x + 3, y + 3};
-    if (!p.getString("area").empty()) a = numbers(p, "area", 4);
+    if (!p.getString("area").empty()) a = p.getNumbers("area", 4);
     return randomWalkScript(static_cast<unsigned>(seed * 7919 + id), int(p.getInt("legs")), a[0],
                             a[1], a[2], a[3], 2.0);
   }
@@ -146,7 +129,7 @@ void addObject(Scenario& s, const std::string& type, double x, double y, const P
 // The [crowd]: random people, placed apart from each other and from the objects, moving by the
 // social force model (default) or by independent random-walk scripts.
 void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
-  const auto a = numbers(cr, "area", 4);
+  const auto a = cr.getNumbers("area", 4);
   std::uniform_real_distribution<double> u01(0, 1);
   auto in = [&](double lo, double hi) { return lo + (hi - lo) * u01(rng); };
   const bool social = cr.getString("model") == "social_force";
@@ -337,7 +320,7 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
               p.getDouble("thickness"), p.getDouble("crown"));
   if (single.count("clutter")) {
     const ParamSet& cl = single.at("clutter");
-    const auto a = numbers(cl, "area", 4);
+    const auto a = cl.getNumbers("area", 4);
     const auto types = cl.getList("types");
     for (const auto& t : types)
       if (t != "pole" && t != "box" && t != "bin" && t != "tree" && t != "wall")
@@ -345,7 +328,7 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
     if (types.empty()) throw ConfigError(cl.where("types") + ": empty");
     std::vector<double> heights;
     if (!cl.getString("heights").empty()) {
-      heights = numbers(cl, "heights", 2);
+      heights = cl.getNumbers("heights", 2);
       if (!(0 < heights[0] && heights[0] <= heights[1]))
         throw ConfigError(cl.where("heights") + ": need 0 < min <= max");
     }

@@ -32,29 +32,23 @@ KnnClassifier load(const PluginContext& ctx) {
   return KnnClassifier(std::move(m.prototypes), std::move(m.stats), o);
 }
 
-class Knn : public Classifier {
+class Knn : public ScoringClassifier {
  public:
-  explicit Knn(const PluginContext& ctx)
-      : knn_(load(ctx)),
-        gather_(ctx.params.getString("model"), knn_.prototypes().features),
-        q_person_(ctx.params.getDouble("q_person")),
-        shape_(parseDetectionShape(ctx.params.getString("shape"))) {}
+  explicit Knn(const PluginContext& ctx) : Knn(ctx, load(ctx)) {}
 
-  void process(Frame& f) override {
-    gather_.gather(f, rows_, cluster_of_);
-    scores_.resize(cluster_of_.size());
-    for (std::size_t r = 0; r < cluster_of_.size(); ++r)
-      scores_[r] = knn_.quality(rows_.data() + r * knn_.dims());
-    appendDetections(f, cluster_of_, scores_, q_person_, shape_);
+ protected:
+  void score(const double* rows, std::size_t n, std::vector<double>& out) override {
+    out.resize(n);
+    for (std::size_t r = 0; r < n; ++r) out[r] = knn_.quality(rows + r * knn_.dims());
   }
 
  private:
+  Knn(const PluginContext& ctx, KnnClassifier knn)
+      : ScoringClassifier(ctx.params.getString("model"), knn.prototypes().features,
+                          ctx.params.getDouble("q_person"),
+                          parseDetectionShape(ctx.params.getString("shape"))),
+        knn_(std::move(knn)) {}
   KnnClassifier knn_;
-  FeatureGather gather_;
-  double q_person_;
-  DetectionShape shape_;
-  std::vector<double> rows_, scores_;
-  std::vector<int> cluster_of_;
 };
 
 PluginDescriptor describe() {
@@ -75,9 +69,7 @@ PluginDescriptor describe() {
           "printed), unit 1; model: as trained"),
       ParamSpec::real("q_person", 0.5, "", 0, 1,
                       "a cluster with quality Q ≥ this is a person detection (P2: Q_P = 0.5)"),
-      ParamSpec::choice("shape", "auto", {"auto", "none", "ellipse"},
-                        "detection shape: ellipse = torso ellipse fitted to a 2D segment; auto: "
-                        "ellipse for torso-height segments, none for legs and 3D clusters"),
+      detectionShapeParam(),
   };
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<Knn>(ctx);

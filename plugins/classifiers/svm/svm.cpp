@@ -13,27 +13,22 @@ namespace {
 
 using namespace pedtrack::classify;
 
-class Svm : public Classifier {
+class Svm : public ScoringClassifier {
  public:
-  explicit Svm(const PluginContext& ctx)
-      : svm_(loadSvmModel(ctx.params.getString("model")).svm),
-        gather_(ctx.params.getString("model"), svm_->features()),
-        threshold_(ctx.params.getDouble("threshold")),
-        shape_(parseDetectionShape(ctx.params.getString("shape"))) {}
+  explicit Svm(const PluginContext& ctx) : Svm(ctx, loadSvmModel(ctx.params.getString("model"))) {}
 
-  void process(Frame& f) override {
-    gather_.gather(f, rows_, cluster_of_);
-    svm_->probability(rows_.data(), cluster_of_.size(), scores_);
-    appendDetections(f, cluster_of_, scores_, threshold_, shape_);
+ protected:
+  void score(const double* rows, std::size_t n, std::vector<double>& out) override {
+    svm_->probability(rows, n, out);
   }
 
  private:
+  Svm(const PluginContext& ctx, LoadedSvm m)
+      : ScoringClassifier(ctx.params.getString("model"), m.svm->features(),
+                          ctx.params.getDouble("threshold"),
+                          parseDetectionShape(ctx.params.getString("shape"))),
+        svm_(std::move(m.svm)) {}
   std::unique_ptr<SvmClassifier> svm_;
-  FeatureGather gather_;
-  double threshold_;
-  DetectionShape shape_;
-  std::vector<double> rows_, scores_;
-  std::vector<int> cluster_of_;
 };
 
 PluginDescriptor describe() {
@@ -44,9 +39,7 @@ PluginDescriptor describe() {
       ParamSpec::inputFile("model", "SVM model file (`pedtrack train svm`; models/*.yml)"),
       ParamSpec::real("threshold", 0.5, "", 0, 1,
                       "a cluster whose calibrated person probability is ≥ this is a detection"),
-      ParamSpec::choice("shape", "auto", {"auto", "none", "ellipse"},
-                        "detection shape: ellipse = torso ellipse fitted to a 2D segment; auto: "
-                        "ellipse for torso-height segments, none for legs and 3D clusters"),
+      detectionShapeParam(),
   };
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<Svm>(ctx);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pedtrack/frame.h"
+#include "pedtrack/plugin.h"
 
 namespace pedtrack::classify {
 
@@ -37,5 +38,28 @@ DetectionShape parseDetectionShape(const std::string& s);  ///< "auto" | "none" 
 /// (or fitted ellipse centre) in the fixed frame, the score and the shape.
 void appendDetections(Frame& f, const std::vector<int>& cluster_of,
                       const std::vector<double>& scores, double threshold, DetectionShape shape);
+
+/// The `shape` parameter every classifier plugin declares.
+ParamSpec detectionShapeParam();
+
+/// A classifier stage: each frame, the model's features of every cluster are scored by score()
+/// and the clusters scoring at least `threshold` become detections. A plugin supplies score().
+class ScoringClassifier : public Classifier {
+ public:
+  ScoringClassifier(const std::string& model_path, std::vector<std::string> model_features,
+                    double threshold, DetectionShape shape);
+  void process(Frame& f) override;
+
+ protected:
+  /// Scores of n feature vectors (row-major, n × model features), in [0, 1].
+  virtual void score(const double* rows, std::size_t n, std::vector<double>& out) = 0;
+
+ private:
+  FeatureGather gather_;
+  double threshold_;
+  DetectionShape shape_;
+  std::vector<double> rows_, scores_;
+  std::vector<int> cluster_of_;
+};
 
 }  // namespace pedtrack::classify
