@@ -168,8 +168,10 @@ int evalSegmentation(const EvalArgs& a) {
 }  // namespace
 
 int evalCommand(const std::vector<std::string>& args) {
-  for (const auto& s : args)
+  for (const auto& s : args) {
     if (s == "--model" || s.rfind("--model=", 0) == 0) return evalClassifierCommand(args);
+    if (s == "--decisions" || s.rfind("--decisions=", 0) == 0) return evalDecisionsCommand(args);
+  }
   EvalArgs a;
   po::options_description opts("options");
   opts.add_options()("truth", po::value(&a.truth)->composing(),
@@ -213,7 +215,8 @@ int evalCommand(const std::vector<std::string>& args) {
           "--truth truth.csv --tracks tracks.csv [options] | --truth truth.csv|BAG.bag "
           "--detections detections.csv|clusters.csv [options] | --truth-points "
           "truth_points.bin --labels point_labels.bin [options] | --model MODEL.yml --dataset "
-          "D.ini [options] (classifiers: `pedtrack eval --model M --help`)",
+          "D.ini [options] (classifiers: `pedtrack eval --model M --help`) | --decisions "
+          "RUN_DIR [options] (`pedtrack eval --decisions D --help`)",
           opts, pos, args, vm))
     return exit_code::kOk;
   a.has_following = vm.count("following") > 0;

@@ -24,8 +24,8 @@ int runCommand(const std::vector<std::string>& args) {
   std::vector<std::string> plugin_path;
   opts.add_options()("pipeline", po::value(&pipeline_file)->required(), "pipeline file (INI)")(
       "input", po::value(&ov.input),
-      "replay this .rawlog or .bag instead of the pipeline's source")(
-      "topic", po::value(&ov.topic), "bag topic(s) to replay with --input (comma list)")(
+      "replay this .rawlog or .bag, or simulate this scenario .ini, instead of the pipeline's "
+      "source")("topic", po::value(&ov.topic), "bag topic(s) to replay with --input (comma list)")(
       "set", po::value(&ov.sets)->composing(), "override a key: section.key=value (repeatable)")(
       "out", po::value(&run.out_dir),
       "directory for tracks.csv, run.json and the stages' side outputs (detections.csv, "

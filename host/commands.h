@@ -13,8 +13,11 @@ int evalCommand(const std::vector<std::string>& args);
 int simCommand(const std::vector<std::string>& args);
 int renderCommand(const std::vector<std::string>& args);
 int trainCommand(const std::vector<std::string>& args);
+int monteCarloCommand(const std::vector<std::string>& args);
 /// `pedtrack eval --model`: classifier models scored on labelled clusters.
 int evalClassifierCommand(const std::vector<std::string>& args);
+/// `pedtrack eval --decisions`: a run's person / non-person decisions against simulated truth.
+int evalDecisionsCommand(const std::vector<std::string>& args);
 
 /// `pedtrack bench --pipeline`: the stages of a pipeline timed on frames read (and decoded)
 /// beforehand, so the figures are the stages' own.

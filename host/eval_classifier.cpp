@@ -4,8 +4,6 @@
 // drawn to a PNG.
 #include <filesystem>
 #include <iostream>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "commands.h"
 #include "options.h"
@@ -13,6 +11,7 @@
 #include "pedtrack/classify/roc.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/text.h"
+#include "plot.h"
 #include "report_format.h"
 #include "sample_csv.h"
 #include "train_data_options.h"
@@ -32,47 +31,22 @@ struct ModelResult {
 };
 
 void drawRoc(const std::string& path, const std::vector<ModelResult>& rs, double threshold) {
-  const int W = 640, H = 640, m0 = 70, m1 = 30;  // margins: left/bottom, top/right
-  const int pw = W - m0 - m1, ph = H - m0 - m1;
-  cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
-  auto px = [&](double fpr, double tpr) {
-    return cv::Point(m0 + int(fpr * pw + 0.5), m1 + int((1 - tpr) * ph + 0.5));
-  };
-  const auto grey = cv::Scalar(220, 220, 220), black = cv::Scalar(0, 0, 0);
-  for (int i = 0; i <= 10; ++i) {
-    cv::line(img, px(i / 10.0, 0), px(i / 10.0, 1), grey, 1);
-    cv::line(img, px(0, i / 10.0), px(1, i / 10.0), grey, 1);
-    const std::string t = mrpt::format("%.1f", i / 10.0);
-    cv::putText(img, t, px(i / 10.0, 0) + cv::Point(-12, 20), cv::FONT_HERSHEY_SIMPLEX, 0.4, black);
-    cv::putText(img, t, px(0, i / 10.0) + cv::Point(-32, 4), cv::FONT_HERSHEY_SIMPLEX, 0.4, black);
-  }
-  cv::line(img, px(0, 0), px(1, 1), grey, 1, cv::LINE_AA);
-  cv::rectangle(img, px(0, 1), px(1, 0), black, 1);
-  cv::putText(img, "false positive rate", cv::Point(m0 + pw / 2 - 80, H - 20),
-              cv::FONT_HERSHEY_SIMPLEX, 0.55, black, 1, cv::LINE_AA);
-  cv::Mat ylab(24, 200, CV_8UC3, cv::Scalar(255, 255, 255));
-  cv::putText(ylab, "detection rate", cv::Point(30, 17), cv::FONT_HERSHEY_SIMPLEX, 0.55, black, 1,
-              cv::LINE_AA);
-  cv::rotate(ylab, ylab, cv::ROTATE_90_COUNTERCLOCKWISE);
-  ylab.copyTo(img(cv::Rect(8, m1 + ph / 2 - 100, 24, 200)));
-  const cv::Scalar colours[] = {
-      {200, 90, 20}, {30, 30, 210}, {40, 150, 40}, {150, 40, 150}, {20, 140, 200}};
+  plot::Axis x{"false positive rate", 0, 1, false, 0.1}, y{"detection rate", 0, 1, false, 0.1};
+  plot::Plot p(640, 640, x, y);
+  p.line({0, 1}, {0, 1}, cv::Scalar(220, 220, 220), 1);
   for (std::size_t i = 0; i < rs.size(); ++i) {
-    const cv::Scalar col = colours[i % 5];
-    const auto roc = rocCurve(rs[i].scores, rs[i].y);
-    std::vector<cv::Point> poly;
-    for (const auto& p : roc) poly.push_back(px(p.fpr, p.tpr));
-    cv::polylines(img, poly, false, col, 2, cv::LINE_AA);
-    cv::circle(img, px(rs[i].c.falsePositiveRate(), rs[i].c.detectionRate()), 5, col, 2,
-               cv::LINE_AA);
-    const std::string t =
-        mrpt::format("%s AUC %.3f, o at %.2f: %.1f%% / %.1f%%",
-                     std::filesystem::path(rs[i].path).filename().c_str(), rs[i].auc, threshold,
-                     100 * rs[i].c.detectionRate(), 100 * rs[i].c.falsePositiveRate());
-    const cv::Point at(m0 + 10, m1 + ph - 15 - int(rs.size() - 1 - i) * 20);
-    cv::putText(img, t, at, cv::FONT_HERSHEY_SIMPLEX, 0.45, col, 1, cv::LINE_AA);
+    const cv::Scalar col = plot::colour(i);
+    std::vector<double> fpr, tpr;
+    for (const auto& pt : rocCurve(rs[i].scores, rs[i].y))
+      fpr.push_back(pt.fpr), tpr.push_back(pt.tpr);
+    p.line(fpr, tpr, col, 2, false,
+           mrpt::format("%s AUC %.3f, o at %.2f: %.1f%% / %.1f%%",
+                        std::filesystem::path(rs[i].path).filename().c_str(), rs[i].auc, threshold,
+                        100 * rs[i].c.detectionRate(), 100 * rs[i].c.falsePositiveRate()));
+    p.marker(rs[i].c.falsePositiveRate(), rs[i].c.detectionRate(), col);
   }
-  if (!cv::imwrite(path, img)) throw ConfigError("--roc: cannot write '" + path + "'");
+  p.legend();
+  if (!p.write(path)) throw ConfigError("--roc: cannot write '" + path + "'");
 }
 
 std::string table(const ModelResult& r, double threshold) {

@@ -23,6 +23,7 @@ const char* kUsage =
     "  sim SCENARIO.ini   simulate a scene into a rawlog plus truth.csv\n"
     "  bench              measure replay or simulation throughput (Release build)\n"
     "  eval               score tracks (MOTA, IDF1, HOTA, NEES), detections or classifiers\n"
+    "  montecarlo P S     run pipeline P on N simulations of scenario S; score them together\n"
     "  train knn|svm      build a person classifier model from labelled clusters\n"
     "  render             draw a run's tracks over its rawlog: a PNG or an MP4 video\n"
     "\n"
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
     if (cmd == "sim") return cli::simCommand(args);
     if (cmd == "render") return cli::renderCommand(args);
     if (cmd == "train") return cli::trainCommand(args);
+    if (cmd == "montecarlo") return cli::monteCarloCommand(args);
     std::cerr << "error: unknown command '" << cmd << "' (see `pedtrack --help`)\n";
     return exit_code::kBadInput;
   } catch (const ConfigError& e) {

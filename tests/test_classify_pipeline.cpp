@@ -37,7 +37,7 @@ TEST_CASE("detect_3d.ini: the k-NN model scores clusters into detections of peop
   REQUIRE(r.exit_code == 0);
   const auto rows = lines(readFile(dir + "/detections.csv"));
   REQUIRE(rows.size() > 100);
-  CHECK(rows[0] == "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta");
+  CHECK(rows[0] == "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster");
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const double score = std::stod(rows[i].substr([&] {
       std::size_t p = 0;

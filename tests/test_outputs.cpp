@@ -44,6 +44,7 @@ TEST_CASE("tracks.csv has the contract's columns and sensor-frame coordinates", 
   a.model_probs = {0.7, 0.3};
   a.status = "confirmed";
   a.nis = 1.25;
+  a.cluster = 5;
   Track b;
   b.id = 4;
   b.has_shape = true;
@@ -58,13 +59,13 @@ TEST_CASE("tracks.csv has the contract's columns and sensor-frame coordinates", 
   REQUIRE(rows.size() == 3);
   CHECK(rows[0] ==
         "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,model_"
-        "probs,status,nis");
+        "probs,status,nis,cluster");
   CHECK(rows[1] ==
         "1519637061.085268,7,3,1.0000,2.0000,2.0000,0.0000,0.00000,0.5000,0.0000,,,0.01,0,0.02,0."
-        "0000,0.7000;0.3000,confirmed,1.25");
+        "0000,0.7000;0.3000,confirmed,1.25,5");
   CHECK(rows[2].find(",4,0.0000,0.0000,") != std::string::npos);
   CHECK(rows[2].find(",0.2500,0.1500,,,,") != std::string::npos);
-  CHECK(rows[2].substr(rows[2].size() - 2) == ",,");  // no status, no nis
+  CHECK(rows[2].substr(rows[2].size() - 3) == ",,,");  // no status, no nis, no cluster
   // The reader gets every column back.
   const ObjectTable t = readObjectTable(dir + "/tracks.csv");
   REQUIRE(t.rows.size() == 2);
@@ -90,6 +91,7 @@ TEST_CASE("detections.csv rows carry both frames and the shape when known", "[ou
   b.yaw = 0.5;
   b.alpha = 0.3;
   b.beta = 0.2;
+  b.cluster = 2;
   f.detections = {a, b};
   {
     DetectionsCsvWriter w(dir + "/detections.csv");
@@ -97,9 +99,10 @@ TEST_CASE("detections.csv rows carry both frames and the shape when known", "[ou
   }
   const auto rows = lines(readFile(dir + "/detections.csv"));
   REQUIRE(rows.size() == 3);
-  CHECK(rows[0] == "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta");
-  CHECK(rows[1] == "1519637061.500000,3,1.0000,2.0000,2.0000,0.0000,0.9000,,,");
-  CHECK(rows[2] == "1519637061.500000,3,1.0000,1.0000,1.0000,0.0000,0.4000,0.50000,0.3000,0.2000");
+  CHECK(rows[0] == "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster");
+  CHECK(rows[1] == "1519637061.500000,3,1.0000,2.0000,2.0000,0.0000,0.9000,,,,");
+  CHECK(rows[2] ==
+        "1519637061.500000,3,1.0000,1.0000,1.0000,0.0000,0.4000,0.50000,0.3000,0.2000,2");
   const ObjectTable t = readDetectionTable(dir + "/detections.csv");
   REQUIRE(t.rows.size() == 2);
   CHECK(t.rows[1].id == 1);

@@ -1,5 +1,6 @@
 // Parameter declarations: validation of every type, range text, suggestions.
 #include <catch2/catch.hpp>
+#include <limits>
 
 #include "pedtrack/errors.h"
 #include "pedtrack/params.h"
@@ -57,4 +58,26 @@ TEST_CASE("ParamSet reads typed values and refuses undeclared keys", "[params]")
   CHECK(p.getList("labels") == std::vector<std::string>{"LIDAR", "HOKUYO1", "front"});
   CHECK(p.where("x") == "a.ini: [src] x");
   CHECK_THROWS_AS(p.getString("y"), std::logic_error);
+}
+
+TEST_CASE("vector parameters check count and element range", "[params]") {
+  const auto spec = ParamSpec::vector("transition", std::vector<double>{0.9, 0.1, 0.2, 0.8}, "", 4,
+                                      0, 1, "matrix");
+  CHECK(spec.default_value == std::string("0.9 0.1 0.2 0.8"));
+  CHECK(spec.rangeText() == "4 × [0, 1]");
+  CHECK(validateValue(spec, "0.5, 0.5; 0.25 0.75", "w") == "0.5 0.5 0.25 0.75");
+  CHECK_THROWS_WITH(validateValue(spec, "0.5 0.5 0.5", "f: [t] transition"),
+                    "f: [t] transition: expected 4 numbers, got 3");
+  CHECK_THROWS_WITH(validateValue(spec, "0.5 1.5 0 1", "w"),
+                    "w: element 2 (1.5) is out of range 4 × [0, 1]");
+  CHECK_THROWS_WITH(validateValue(spec, "0.5 x 0 1", "w"), "w: 'x' is not a number");
+  CHECK_THROWS_WITH(validateValue(spec, "", "w"), "w: no numbers given");
+  const auto any = ParamSpec::vector("rates", std::vector<double>{1.4, -1.4}, "rad/s", 0,
+                                     -std::numeric_limits<double>::infinity(),
+                                     std::numeric_limits<double>::infinity(), "turn rates");
+  CHECK(any.rangeText() == "n numbers");
+  CHECK(validateValue(any, "0.123456789012", "w") == "0.123456789012");
+  ParamSet ps("f", "s");
+  ps.set("rates", validateValue(any, "1 -2 3", "w"));
+  CHECK(ps.getVector("rates") == std::vector<double>{1, -2, 3});
 }

@@ -105,6 +105,7 @@ ObjectTable readTable(const std::string& path, bool id_required) {
     real(index("score"), r.score, false);
     real(index("height"), r.height, false);
     integer(index("visible_points"), r.visible_points, false);
+    integer(index("cluster"), r.cluster, false);
     real(index("left_leg_x"), r.left_leg_x, false);
     real(index("left_leg_y"), r.left_leg_y, false);
     real(index("right_leg_x"), r.right_leg_x, false);

@@ -56,7 +56,7 @@ void CsvStream::close() {
 
 const char* TracksCsvWriter::header() {
   return "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,"
-         "model_probs,status,nis";
+         "model_probs,status,nis,cluster";
 }
 
 void TracksCsvWriter::write(const Frame& f) {
@@ -90,13 +90,15 @@ void TracksCsvWriter::write(const Frame& f) {
       n = std::snprintf(buf, sizeof buf, "%.6g", tr.nis);
       writeClamped(out_, buf, n, sizeof buf);
     }
+    out_ << ',';
+    if (tr.cluster >= 0) out_ << tr.cluster;
     out_ << '\n';
   }
   frameWritten();
 }
 
 const char* DetectionsCsvWriter::header() {
-  return "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta";
+  return "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster";
 }
 
 void DetectionsCsvWriter::write(const Frame& f) {
@@ -109,11 +111,13 @@ void DetectionsCsvWriter::write(const Frame& f) {
     writeClamped(out_, buf, n, sizeof buf);
     // Detection marks an unknown shape with alpha = beta = 0; its yaw then means nothing either.
     if (d.alpha > 0 || d.beta > 0) {
-      n = std::snprintf(buf, sizeof buf, "%.5f,%.4f,%.4f\n", d.yaw, d.alpha, d.beta);
+      n = std::snprintf(buf, sizeof buf, "%.5f,%.4f,%.4f,", d.yaw, d.alpha, d.beta);
       writeClamped(out_, buf, n, sizeof buf);
     } else {
-      out_ << ",,\n";
+      out_ << ",,,";
     }
+    if (d.cluster >= 0) out_ << d.cluster;
+    out_ << '\n';
   }
   frameWritten();
 }

@@ -24,6 +24,8 @@ const char* toString(ParamType t) {
       return "enum";
     case ParamType::InputFile:
       return "file";
+    case ParamType::Vector:
+      return "vector";
   }
   return "?";
 }
@@ -89,6 +91,29 @@ ParamSpec ParamSpec::choice(std::string name, std::string def, std::vector<std::
   return s;
 }
 
+// 12 significant digits: a value typed in a pipeline survives validation unchanged.
+static std::string joinNumbers(const std::vector<double>& v) {
+  std::ostringstream os;
+  os.precision(12);
+  for (std::size_t i = 0; i < v.size(); ++i) os << (i ? " " : "") << v[i];
+  return os.str();
+}
+
+ParamSpec ParamSpec::vector(std::string name, std::optional<std::vector<double>> def,
+                            std::string unit, std::size_t length, double min, double max,
+                            std::string doc) {
+  ParamSpec s;
+  s.name = std::move(name);
+  s.type = ParamType::Vector;
+  if (def) s.default_value = joinNumbers(*def);
+  s.unit = std::move(unit);
+  s.length = length;
+  s.min = min;
+  s.max = max;
+  s.doc = std::move(doc);
+  return s;
+}
+
 ParamSpec ParamSpec::inputFile(std::string name, std::string doc) {
   ParamSpec s;
   s.name = std::move(name);
@@ -104,6 +129,12 @@ std::string ParamSpec::rangeText() const {
     return r + "}";
   }
   if (type == ParamType::Bool) return "{true, false}";
+  if (type == ParamType::Vector) {
+    const std::string count = length ? std::to_string(length) : std::string("n");
+    if (!std::isfinite(min) && !std::isfinite(max)) return count + " numbers";
+    return count + " × [" + (std::isfinite(min) ? formatNumber(min) : std::string("-inf")) + ", " +
+           (std::isfinite(max) ? formatNumber(max) : std::string("inf")) + "]";
+  }
   if ((type == ParamType::Int || type == ParamType::Double) &&
       (std::isfinite(min) || std::isfinite(max))) {
     return "[" + (std::isfinite(min) ? formatNumber(min) : std::string("-inf")) + ", " +
@@ -159,6 +190,25 @@ std::string validateValue(const ParamSpec& spec, const std::string& value,
       return value;
     case ParamType::String:
       return value;
+    case ParamType::Vector: {
+      std::string text = value;
+      std::replace(text.begin(), text.end(), ';', ' ');
+      std::vector<double> v;
+      for (const auto& tok : splitList(text)) {
+        char* end = nullptr;
+        const double x = std::strtod(tok.c_str(), &end);
+        if (end == tok.c_str() || *end || !std::isfinite(x)) fail("'" + tok + "' is not a number");
+        if (x < spec.min || x > spec.max)
+          fail("element " + std::to_string(v.size() + 1) + " (" + tok + ") is out of range " +
+               spec.rangeText() + (spec.unit.empty() ? "" : " " + spec.unit));
+        v.push_back(x);
+      }
+      if (v.empty()) fail("no numbers given");
+      if (spec.length && v.size() != spec.length)
+        fail("expected " + std::to_string(spec.length) + " numbers, got " +
+             std::to_string(v.size()));
+      return joinNumbers(v);
+    }
   }
   return value;
 }
@@ -209,6 +259,10 @@ long ParamSet::getInt(const std::string& key) const {
 }
 bool ParamSet::getBool(const std::string& key) const {
   return getString(key) == "true";
+}
+
+std::vector<double> ParamSet::getVector(const std::string& key) const {
+  return getNumbers(key);
 }
 
 std::vector<std::string> ParamSet::getList(const std::string& key) const {

@@ -179,9 +179,11 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
     const std::string ext = fs::path(overrides.input).extension().string();
     model.keys[source].clear();
     if (!model.hasSection(source)) model.sections.push_back(source);
-    model.set(source, "plugin", ext == ".bag" ? "rosbag" : "rawlog");
-    model.set(source, "file", absoluteFromCwd(overrides.input));
-    from_cli.insert({source, "file"});
+    // A scenario (.ini) is simulated; anything else is a log replayed.
+    const std::string key = ext == ".ini" ? "scenario" : "file";
+    model.set(source, "plugin", ext == ".bag" ? "rosbag" : ext == ".ini" ? "sim" : "rawlog");
+    model.set(source, key, absoluteFromCwd(overrides.input));
+    from_cli.insert({source, key});
     if (!overrides.topic.empty()) {
       if (ext != ".bag")
         throw ConfigError("--topic: only a .bag input has topics ('" + overrides.input + "')");

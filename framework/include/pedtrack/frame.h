@@ -71,6 +71,9 @@ struct Track {
   /// Normalized innovation squared of this frame's update (consistency checks); NaN when the
   /// track was not updated or the tracker does not compute it.
   double nis = std::numeric_limits<double>::quiet_NaN();
+  /// The cluster (index into Frame::clusters) of the detection that updated the track this
+  /// frame, -1 when none did: links a track to clusters.csv and point_labels.bin.
+  int cluster = -1;
 };
 
 /// The points one observation contributed to Frame::cloud().

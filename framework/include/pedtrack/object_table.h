@@ -27,6 +27,9 @@ struct ObjectRow {
   double nis = kNaN;  ///< normalized innovation squared of this frame's update
   double score = kNaN;
   std::string status;
+  /// `cluster`: detections.csv / clusters.csv the cluster's index in its frame; tracks.csv the
+  /// cluster whose detection updated the track that frame. -1 when absent or empty.
+  long cluster = -1;
   // truth.csv only
   double height = kNaN;
   long visible_points = -1;
@@ -49,7 +52,7 @@ struct ObjectTable {
 /// Throws ConfigError on a missing file, missing required column or unparsable value.
 ObjectTable readObjectTable(const std::string& path);
 
-/// Reads detections.csv (header `t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta`): like
+/// Reads detections.csv (header `t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster`): like
 /// readObjectTable, but the id column is optional; without one, a row's id is its position among
 /// the rows of its frame (consecutive rows with the same t).
 ObjectTable readDetectionTable(const std::string& path);

@@ -9,7 +9,9 @@
 
 namespace pedtrack {
 
-enum class ParamType { Bool, Int, Double, String, Enum, InputFile };
+/// Vector: a list of numbers (white space, commas or semicolons between them), with an exact
+/// length (or any) and a range every element must lie in — matrices and noise diagonals.
+enum class ParamType { Bool, Int, Double, String, Enum, InputFile, Vector };
 const char* toString(ParamType t);
 
 struct ParamSpec {
@@ -17,9 +19,10 @@ struct ParamSpec {
   ParamType type = ParamType::String;
   std::string unit;                                       ///< "m", "s", "Hz", "" for none
   std::optional<std::string> default_value;               ///< no default → the key is required
-  double min = -std::numeric_limits<double>::infinity();  ///< Int/Double only
+  double min = -std::numeric_limits<double>::infinity();  ///< Int/Double; Vector elements
   double max = std::numeric_limits<double>::infinity();
   std::vector<std::string> choices;  ///< Enum only
+  std::size_t length = 0;            ///< Vector only: exact element count, 0 = any (≥ 1)
   std::string doc;                   ///< one line
 
   // Fluent builders, so a plugin's declaration reads as a table.
@@ -31,10 +34,14 @@ struct ParamSpec {
   static ParamSpec text(std::string name, std::optional<std::string> def, std::string doc);
   static ParamSpec choice(std::string name, std::string def, std::vector<std::string> choices,
                           std::string doc);
+  /// A list of numbers; `length` 0 accepts any count of at least one.
+  static ParamSpec vector(std::string name, std::optional<std::vector<double>> def,
+                          std::string unit, std::size_t length, double min, double max,
+                          std::string doc);
   /// A file that must exist before the first frame (checked at validation time).
   static ParamSpec inputFile(std::string name, std::string doc);
   bool required() const { return !default_value.has_value(); }
-  /// "[0, 100]", "{realtime, max}" or "" when anything of the type goes.
+  /// "[0, 100]", "{realtime, max}", "9 × [0, 1]" or "" when anything of the type goes.
   std::string rangeText() const;
 };
 
@@ -53,6 +60,8 @@ class ParamSet {
   double getDouble(const std::string& key) const;
   long getInt(const std::string& key) const;
   bool getBool(const std::string& key) const;
+  /// A Vector parameter's numbers (validated already).
+  std::vector<double> getVector(const std::string& key) const;
   /// Splits a list value on whitespace and commas.
   std::vector<std::string> getList(const std::string& key) const;
   /// The value as numbers separated by white space, commas or semicolons; exactly `n` of them
