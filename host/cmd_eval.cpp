@@ -2,15 +2,20 @@
 // runs pooled), or detections against truth points (precision/recall), the truth being the
 // simulator's truth.csv or, with ROS bag support, a bag's labelled leg positions.
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <optional>
 
 #include "commands.h"
+#include "eval_range_bands.h"
 #include "eval_report.h"
 #include "options.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/eval/detection_pr.h"
 #include "pedtrack/eval/evaluate.h"
 #include "pedtrack/eval/segmentation.h"
+#include "pedtrack/text.h"
 #ifdef PEDTRACK_WITH_ROSBAG
 #include "eval_bag.h"
 #endif
@@ -23,6 +28,7 @@ constexpr double kTimeTolerance = 1e-4;  // s: two stamps this close are one fra
 struct EvalArgs {
   std::vector<std::string> truth, tracks;
   std::string detections, frame = "fixed", topic, labels_topic, truth_points, labels;
+  std::string range_bins, model_names, shape_plot, shape_bounds;
   double threshold = 0, hota_distance = 0, range_bin = 1, isolation = 0.5;
   long min_points = 10, fragment = 3;
   long min_visible = 1, following = 0;
@@ -36,6 +42,23 @@ bool isBag(const std::string& path) {
 
 void check(bool ok, const std::string& message) {
   if (!ok) throw ConfigError("pedtrack eval: " + message + " (see `pedtrack eval --help`)");
+}
+
+/// --shape-bounds amin,amax,bmin,bmax; not given when `text` is empty.
+ShapeBounds shapeBounds(const std::string& text) {
+  ShapeBounds b;
+  if (text.empty()) return b;
+  const std::vector<std::string> v = splitList(text);
+  check(v.size() == 4, "--shape-bounds: expected amin,amax,bmin,bmax (4 numbers in m)");
+  double x[4];
+  for (int i = 0; i < 4; ++i) {
+    char* end = nullptr;
+    x[i] = std::strtod(v[i].c_str(), &end);
+    check(end != v[i].c_str() && *end == '\0' && std::isfinite(x[i]),
+          "--shape-bounds: '" + v[i] + "' is not a number (expected amin,amax,bmin,bmax in m)");
+  }
+  check(x[0] <= x[1] && x[2] <= x[3], "--shape-bounds: expected amin <= amax and bmin <= bmax");
+  return {true, x[0], x[1], x[2], x[3]};
 }
 
 void validate(const EvalArgs& a, const po::variables_map& vm) {
@@ -66,7 +89,13 @@ void validate(const EvalArgs& a, const po::variables_map& vm) {
     check(!vm.count("hota-distance") || a.hota_distance > 0, "--hota-distance: must be > 0 m");
     check(a.nis_dof >= 1, "--nis-dof: must be >= 1");
     check(!a.legs, "--legs applies to --detections only");
+    check(a.model_names.empty() || !a.range_bins.empty(), "--model-names needs --range-bins");
+    check(a.shape_bounds.empty() || !a.shape_plot.empty(), "--shape-bounds needs --shape-plot");
+    if (!a.range_bins.empty()) parseRangeEdges(a.range_bins, "--range-bins");
+    shapeBounds(a.shape_bounds);
   } else {
+    for (const char* o : {"range-bins", "model-names", "shape-plot", "shape-bounds"})
+      check(!vm.count(o), "--" + std::string(o) + " applies to --tracks only");
     check(a.truth.size() == 1, "--detections takes one --truth");
     check(a.range_bin > 0, "--range-bin: must be > 0 m");
     check(!a.has_following, "--following applies to --tracks only");
@@ -102,7 +131,42 @@ int evalTracking(const EvalArgs& a) {
   s.min_visible = a.min_visible;
   s.following = opt.following;
   s.hota_distance = opt.hota_distance;
-  std::cout << (a.json ? trackingJson(rep, s) : trackingText(rep, s));
+  if (a.range_bins.empty() && a.shape_plot.empty()) {
+    std::cout << (a.json ? trackingJson(rep, s) : trackingText(rep, s));
+    return exit_code::kOk;
+  }
+  // The matches of every run again, for the bands and the shape plot.
+  std::vector<eval::MatchedPair> pairs;
+  eval::ClearMotOptions co;
+  co.threshold = opt.threshold;
+  co.following = opt.following;
+  for (const auto& frames : runs) {
+    const auto cm = eval::clearMot(frames, co);
+    pairs.insert(pairs.end(), cm.pairs.begin(), cm.pairs.end());
+  }
+  std::optional<eval::RangeBandReport> bands;
+  const std::vector<std::string> names = splitList(a.model_names);
+  if (!a.range_bins.empty()) {
+    ModelProbs probs;
+    for (const auto& t : tracks) probs.add(t);
+    bands = eval::rangeBands(pairs, parseRangeEdges(a.range_bins, "--range-bins"),
+                             [&](const ObjectRow& r) { return probs.of(r); });
+  }
+  std::size_t shape_rows = 0;
+  if (!a.shape_plot.empty()) {
+    shape_rows = drawShapePlot(a.shape_plot, pairs, shapeBounds(a.shape_bounds));
+  }
+  if (a.json) {
+    std::vector<std::pair<std::string, std::string>> extra;
+    if (bands) extra.emplace_back("range_bands", rangeBandsJson(*bands, names));
+    std::cout << trackingJson(rep, s, extra);
+  } else {
+    std::cout << trackingText(rep, s);
+    if (bands) std::cout << rangeBandsText(*bands, names);
+    if (!a.shape_plot.empty())
+      std::cout << "\nshape plot: " << a.shape_plot << " (" << shape_rows
+                << " matched track rows with alpha, beta)\n";
+  }
   return exit_code::kOk;
 }
 
@@ -207,6 +271,15 @@ int evalCommand(const std::vector<std::string>& args) {
       "segmentation: a cluster holds a person (or object) from this many of its points")(
       "isolation", po::value(&a.isolation)->default_value(0.5),
       "segmentation: people at least this clear of everything else (m) are the isolated subset")(
+      "range-bins", po::value(&a.range_bins),
+      "tracks: edges of distance bands from the sensor, m (e.g. 0,10,20,30: [0,10), ..., "
+      "[30,inf)); per band the matches' errors, alpha, beta and model probabilities")(
+      "model-names", po::value(&a.model_names),
+      "tracks: names of the model_probs entries, in order (e.g. ellipse,box,cog; default "
+      "prob_1, prob_2, ...)")("shape-plot", po::value(&a.shape_plot),
+                              "tracks: PNG of the matched rows' alpha and beta against range")(
+      "shape-bounds", po::value(&a.shape_bounds),
+      "tracks: amin,amax,bmin,bmax (m), drawn dashed on --shape-plot")(
       "json", po::bool_switch(&a.json), "print one JSON object instead of the table");
   po::positional_options_description pos;
   po::variables_map vm;

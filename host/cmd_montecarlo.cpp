@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "commands.h"
+#include "montecarlo_compare.h"
 #include "montecarlo_plots.h"
 #include "montecarlo_report.h"
 #include "montecarlo_run.h"
@@ -31,16 +32,86 @@ void removeStalePlots(const std::string& dir) {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     const std::string n = e.path().filename().string();
-    const bool plot =
-        e.path().extension() == ".png" && (n.rfind("nees_", 0) == 0 || n.rfind("nis_", 0) == 0 ||
-                                           n.rfind("rmse_", 0) == 0 || n == "llr.png");
+    const bool plot = e.path().extension() == ".png" &&
+                      (n.rfind("nees_", 0) == 0 || n.rfind("nis_", 0) == 0 ||
+                       n.rfind("rmse_", 0) == 0 || n.rfind("heading_", 0) == 0 || n == "llr.png");
     if (plot) fs::remove(e.path(), ec);
   }
+}
+
+std::vector<std::string> splitLabels(const std::string& text) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : text + ",") {
+    if (c != ',') {
+      cur += c;
+      continue;
+    }
+    out.push_back(cur);
+    cur.clear();
+  }
+  return out;
+}
+
+/// `pedtrack montecarlo --compare DIR... [--labels A,B,...] --out DIR`: no simulation.
+int compareCommand(const std::vector<std::string>& args) {
+  std::vector<std::string> dirs;
+  std::string labels, out;
+  po::options_description opts("options");
+  opts.add_options()("compare", po::value(&dirs)->multitoken()->zero_tokens()->required(),
+                     "montecarlo output directories to put side by side (each with "
+                     "montecarlo.json and consistency.csv)")(
+      "labels", po::value(&labels),
+      "comma-separated names of the directories, in order (default: the directory names)")(
+      "out", po::value(&out)->required(), "directory for compare.md and errors_<truth id>.png");
+  po::variables_map vm;
+  if (!parseOptions("montecarlo",
+                    "--compare DIR1 DIR2 ... [--labels A,B,...] --out DIR (no simulation)", opts,
+                    po::positional_options_description(), args, vm))
+    return exit_code::kOk;
+  auto fail = [](const std::string& m) {
+    throw ConfigError("pedtrack montecarlo --compare: " + m +
+                      " (see `pedtrack montecarlo --compare --help`)");
+  };
+  if (dirs.empty()) fail("give the directories to compare after --compare");
+  std::vector<std::string> names =
+      labels.empty() ? std::vector<std::string>() : splitLabels(labels);
+  if (!vm.count("labels"))
+    for (const auto& d : dirs)
+      names.push_back(fs::path(d).lexically_normal().filename().empty()
+                          ? fs::path(d).lexically_normal().parent_path().filename().string()
+                          : fs::path(d).lexically_normal().filename().string());
+  if (names.size() != dirs.size())
+    fail("--labels names " + std::to_string(names.size()) + " label" +
+         (names.size() == 1 ? "" : "s") + " for " + std::to_string(dirs.size()) + " director" +
+         (dirs.size() == 1 ? "y" : "ies"));
+  for (const auto& n : names)
+    if (n.empty()) fail("--labels: empty label in '" + labels + "'");
+  // Every directory is read (and rejected) before anything is written.
+  std::vector<CompareEntry> entries;
+  for (std::size_t i = 0; i < dirs.size(); ++i)
+    entries.push_back(readMonteCarloDir(dirs[i], names[i]));
+  fs::create_directories(out);
+  const std::string table = compareMarkdown(entries);
+  {
+    std::ofstream f(out + "/compare.md");
+    if (!(f << table)) throw DataError("cannot write '" + out + "/compare.md'");
+  }
+  for (const auto& f : fs::directory_iterator(out))
+    if (f.path().extension() == ".png" && f.path().filename().string().rfind("errors_", 0) == 0)
+      fs::remove(f.path());
+  const std::vector<std::string> plots = drawCompareErrors(out, entries);
+  std::cout << table << "\nwritten to " << out << ": compare.md";
+  for (const auto& p : plots) std::cout << ", " << p;
+  std::cout << "\n";
+  return exit_code::kOk;
 }
 
 }  // namespace
 
 int monteCarloCommand(const std::vector<std::string>& args) {
+  for (const auto& a : args)
+    if (a == "--compare" || a.rfind("--compare=", 0) == 0) return compareCommand(args);
   MonteCarloSetup setup;
   std::vector<std::string> plugin_path;
   long runs = 50, seed_base = 1, jobs = 0;
@@ -67,8 +138,11 @@ int monteCarloCommand(const std::vector<std::string>& args) {
   po::positional_options_description pos;
   pos.add("pipeline", 1).add("scenario", 1);
   po::variables_map vm;
-  if (!parseOptions("montecarlo", "PIPELINE.ini SCENARIO.ini --out DIR [--runs N] [options]", opts,
-                    pos, args, vm))
+  if (!parseOptions("montecarlo",
+                    "PIPELINE.ini SCENARIO.ini --out DIR [--runs N] [options] | --compare DIR1 "
+                    "DIR2 ... [--labels A,B,...] --out DIR (`pedtrack montecarlo --compare "
+                    "--help`)",
+                    opts, pos, args, vm))
     return exit_code::kOk;
   check(runs >= 1, "--runs: must be >= 1");
   check(seed_base >= 0 && seed_base + runs - 1 <= 4294967295L,

@@ -89,6 +89,8 @@ std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s) {
   o += format("  heading MAE         %s rad = %s deg   (%zu pairs with yaw)\n",
               fixed(e.headingMae()).c_str(), fixed(e.headingMae() * 180 / M_PI, 2).c_str(),
               e.heading_pairs);
+  o += format("  heading RMSE        %s rad = %s deg\n", fixed(e.headingRmse()).c_str(),
+              fixed(e.headingRmse() * 180 / M_PI, 2).c_str());
   o += format("  semi-axis MAE       major %s m, minor %s m   (%zu pairs with shape)\n",
               fixed(e.majorMae()).c_str(), fixed(e.minorMae()).c_str(), e.shape_pairs);
   o += format("  speed MAE           %s m/s, velocity RMSE %s m/s   (%zu pairs)\n",
@@ -117,7 +119,8 @@ std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s) {
   return o;
 }
 
-std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s) {
+std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s,
+                         const std::vector<std::pair<std::string, std::string>>& extra) {
   const auto& c = r.clear;
   const auto& e = r.errors;
   Json clear;
@@ -141,6 +144,8 @@ std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s) {
       .count("heading_pairs", e.heading_pairs)
       .num("heading_mae_rad", e.headingMae())
       .num("heading_mae_deg", e.headingMae() * 180 / M_PI)
+      .num("heading_rmse_rad", e.headingRmse())
+      .num("heading_rmse_deg", e.headingRmse() * 180 / M_PI)
       .count("shape_pairs", e.shape_pairs)
       .num("major_axis_mae_m", e.majorMae())
       .num("minor_axis_mae_m", e.minorMae())
@@ -186,6 +191,7 @@ std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s) {
       .raw("hota", hota)
       .raw("nees", consistencyJson(r.nees, "nees"))
       .raw("nis", consistencyJson(r.nis, "nis"));
+  for (const auto& [key, value] : extra) top.raw(key.c_str(), value);
   return top.str() + "\n";
 }
 

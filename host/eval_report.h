@@ -2,6 +2,8 @@
 // `pedtrack eval` output: a readable table, or one JSON object with every number.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "pedtrack/eval/detection_pr.h"
 #include "pedtrack/eval/evaluate.h"
@@ -21,7 +23,9 @@ struct EvalSetup {
 };
 
 std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s);
-std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s);
+/// `extra`: keys appended to the object with their raw JSON values (e.g. range_bands).
+std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s,
+                         const std::vector<std::pair<std::string, std::string>>& extra = {});
 std::string detectionText(const eval::DetectionCounts& c, const EvalSetup& s);
 std::string detectionJson(const eval::DetectionCounts& c, const EvalSetup& s);
 std::string segmentationText(const eval::SegmentationReport& r, const eval::SegmentationOptions& o);

@@ -85,6 +85,22 @@ void drawRmse(const std::string& path, const std::vector<const FramePoint*>& pts
   if (!p.write(path)) throw DataError("cannot write '" + path + "'");
 }
 
+/// The heading RMSE per frame; the line breaks over frames without a heading value.
+void drawHeading(const std::string& path, const std::vector<const FramePoint*>& pts, double t0,
+                 const std::string& title) {
+  std::vector<double> t, h;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (i && pts[i]->frame > pts[i - 1]->frame + 1) t.push_back(NAN), h.push_back(NAN);
+    t.push_back(pts[i]->t - t0);
+    h.push_back(pts[i]->heading_n ? pts[i]->heading_rmse : NAN);
+  }
+  const plot::Axis x = plot::fitAxis("time (s)", t);
+  plot::Plot p(kWidth, kHeight, x, plot::fitAxis("heading RMSE (rad)", h, false, true), title);
+  p.line(t, h, plot::kBlue, 2, false, "heading |wrap(yaw - yaw true)|");
+  p.legend();
+  if (!p.write(path)) throw DataError("cannot write '" + path + "'");
+}
+
 std::vector<std::string> splitCsv(const std::string& line) {
   std::vector<std::string> out;
   std::stringstream ss(line);
@@ -135,6 +151,13 @@ std::vector<std::string> drawConsistencyPlots(const std::string& dir, const Mont
              format("%s: position RMSE per frame (mean %.3f m, max %.3f m)", head.c_str(),
                     t.rmse_mean, t.rmse_max));
     files.push_back(f);
+    if (t.heading_frames) {
+      const std::string h = format("heading_%ld.png", t.id);
+      drawHeading(dir + "/" + h, it->second, score.t0,
+                  format("%s: heading RMSE per frame (mean %.3f rad, max %.3f rad)", head.c_str(),
+                         t.heading_rmse_mean, t.heading_rmse_max));
+      files.push_back(h);
+    }
   }
   return files;
 }

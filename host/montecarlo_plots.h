@@ -9,9 +9,10 @@
 
 namespace pedtrack::cli {
 
-/// Draws nees_<id>.png, nis_<id>.png (when the tracks have NIS) and rmse_<id>.png into `dir` for
-/// every truth id matched in some run; `name` (the scenario) heads each title. Returns the file
-/// names written. Throws DataError when a file cannot be written.
+/// Draws nees_<id>.png, nis_<id>.png (when the tracks have NIS), rmse_<id>.png and
+/// heading_<id>.png (when some matched track row has yaw) into `dir` for every truth id matched
+/// in some run; `name` (the scenario) heads each title. Returns the file names written. Throws
+/// DataError when a file cannot be written.
 std::vector<std::string> drawConsistencyPlots(const std::string& dir, const MonteCarloScore& score,
                                               const std::string& name);
 

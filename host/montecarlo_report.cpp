@@ -57,14 +57,15 @@ std::string percent(double fraction) {
 std::string perTruthText(const MonteCarloScore& s) {
   std::string o = format(
       "\nPer truth id (frame index k; NEES and NIS averaged over the runs "
-      "that matched it at k)\n  %-7s %7s %8s %12s %8s %11s %8s %11s %10s\n",
+      "that matched it at k)\n  %-7s %7s %8s %12s %8s %11s %8s %11s %10s %17s %16s\n",
       "truth", "frames", "matched", "NEES frames", "inside", "NIS frames", "inside", "RMSE mean",
-      "RMSE max");
+      "RMSE max", "heading RMSE mean", "heading RMSE max");
   for (const auto& t : s.truths)
-    o += format("  %-7ld %7zu %8zu %12zu %8s %11zu %8s %9s m %8s m\n", t.id, t.frames,
-                t.matched_frames, t.nees_frames, percent(t.nees_inside).c_str(), t.nis_frames,
-                percent(t.nis_inside).c_str(), fixed(t.rmse_mean).c_str(),
-                fixed(t.rmse_max).c_str());
+    o += format("  %-7ld %7zu %8zu %12zu %8s %11zu %8s %9s m %8s m %13s rad %12s rad\n", t.id,
+                t.frames, t.matched_frames, t.nees_frames, percent(t.nees_inside).c_str(),
+                t.nis_frames, percent(t.nis_inside).c_str(), fixed(t.rmse_mean).c_str(),
+                fixed(t.rmse_max).c_str(), fixed(t.heading_rmse_mean).c_str(),
+                fixed(t.heading_rmse_max).c_str());
   return o;
 }
 
@@ -89,7 +90,10 @@ std::string truthJson(const TruthSummary& t) {
       .count("nis_frames", t.nis_frames)
       .num("nis_fraction_inside", t.nis_inside)
       .num("rmse_mean_m", t.rmse_mean)
-      .num("rmse_max_m", t.rmse_max);
+      .num("rmse_max_m", t.rmse_max)
+      .count("heading_frames", t.heading_frames)
+      .num("heading_rmse_mean_rad", t.heading_rmse_mean)
+      .num("heading_rmse_max_rad", t.heading_rmse_max);
   return j.str();
 }
 
@@ -230,7 +234,8 @@ std::string monteCarloJson(const MonteCarloInfo& info, const MonteCarloScore* s)
       .raw("id_switches", switches)
       .raw("per_truth", truths)
       .raw("run_list", runsJson(info, s))
-      .raw("files", files + "]");
+      .raw("files", files + "]")
+      .raw("t0", s ? format("%.6f", s->t0) : std::string("null"));
   return top.str() + "\n";
 }
 
@@ -238,11 +243,12 @@ void writeConsistencyCsv(const std::string& path, const MonteCarloScore& s) {
   std::ofstream f(path);
   if (!f) throw DataError("cannot write '" + path + "'");
   f << "truth_id,frame,t,n,nees_mean,nees_lower,nees_upper,nees_inside,nis_mean,nis_lower,"
-       "nis_upper,nis_inside,rmse_x,rmse_y,rmse\n";
+       "nis_upper,nis_inside,rmse_x,rmse_y,rmse,heading_n,heading_rmse\n";
   for (const auto& p : s.points)
     f << p.truth_id << "," << p.frame << "," << csvNumber(p.t) << "," << p.n << ","
       << csvConsistency(p.nees) << "," << csvConsistency(p.nis) << "," << csvNumber(p.rmse_x) << ","
-      << csvNumber(p.rmse_y) << "," << csvNumber(p.rmse) << "\n";
+      << csvNumber(p.rmse_y) << "," << csvNumber(p.rmse) << "," << p.heading_n << ","
+      << csvNumber(p.heading_rmse) << "\n";
   if (!f) throw DataError("cannot write '" + path + "'");
 }
 

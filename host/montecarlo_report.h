@@ -23,8 +23,8 @@ std::string monteCarloJson(const MonteCarloInfo& info, const MonteCarloScore* sc
 
 /// consistency.csv: one row per truth id and frame index matched in some run:
 /// truth_id,frame,t,n,nees_mean,nees_lower,nees_upper,nees_inside,nis_mean,nis_lower,nis_upper,
-/// nis_inside,rmse_x,rmse_y,rmse (empty when a column has no value). Throws DataError when the
-/// file cannot be written.
+/// nis_inside,rmse_x,rmse_y,rmse,heading_n,heading_rmse (empty when a column has no value). Throws
+/// DataError when the file cannot be written.
 void writeConsistencyCsv(const std::string& path, const MonteCarloScore& score);
 
 }  // namespace pedtrack::cli

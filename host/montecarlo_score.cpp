@@ -16,6 +16,8 @@ using Key = std::pair<long, std::size_t>;  // truth id, frame index
 struct SquaredErrors {
   double sx = 0, sy = 0;
   std::size_t n = 0;
+  double syaw = 0;  // rad², pairs where both rows have yaw
+  std::size_t n_yaw = 0;
 };
 
 void attach(std::map<Key, FramePoint>& points, const std::optional<eval::ConsistencyReport>& rep,
@@ -32,17 +34,24 @@ TruthSummary summarise(long id, std::size_t scored_frames, const std::vector<Fra
   s.id = id;
   s.frames = scored_frames;
   std::size_t nees_in = 0, nis_in = 0;
-  double rmse_sum = 0;
+  double rmse_sum = 0, heading_sum = 0;
   for (const auto& p : points) {
     if (p.truth_id != id) continue;
     ++s.matched_frames;
     rmse_sum += p.rmse;
     s.rmse_max = std::max(s.rmse_max, p.rmse);
+    if (p.heading_n) {
+      ++s.heading_frames;
+      heading_sum += p.heading_rmse;
+      s.heading_rmse_max = std::max(s.heading_rmse_max, p.heading_rmse);
+    }
     if (p.nees) ++s.nees_frames, nees_in += p.nees->inside;
     if (p.nis) ++s.nis_frames, nis_in += p.nis->inside;
   }
   s.rmse_mean = s.matched_frames ? rmse_sum / s.matched_frames : NAN;
   if (!s.matched_frames) s.rmse_max = NAN;
+  s.heading_rmse_mean = s.heading_frames ? heading_sum / s.heading_frames : NAN;
+  if (!s.heading_frames) s.heading_rmse_max = NAN;
   s.nees_inside = s.nees_frames ? double(nees_in) / s.nees_frames : NAN;
   s.nis_inside = s.nis_frames ? double(nis_in) / s.nis_frames : NAN;
   return s;
@@ -100,6 +109,13 @@ MonteCarloScore scoreMonteCarlo(const std::vector<std::string>& truth,
       e.sx += (p.estimate.x - p.truth.x) * (p.estimate.x - p.truth.x);
       e.sy += (p.estimate.y - p.truth.y) * (p.estimate.y - p.truth.y);
       ++e.n;
+      const ObjectRow* er = p.estimate.row;
+      const ObjectRow* tr = p.truth.row;
+      if (er && tr && std::isfinite(er->yaw) && std::isfinite(tr->yaw)) {
+        const double d = eval::wrapAngle(er->yaw - tr->yaw);
+        e.syaw += d * d;
+        ++e.n_yaw;
+      }
     }
   }
   if (s.track_rows > 0) {
@@ -114,6 +130,8 @@ MonteCarloScore scoreMonteCarlo(const std::vector<std::string>& truth,
       p.rmse_x = std::sqrt(e.sx / e.n);
       p.rmse_y = std::sqrt(e.sy / e.n);
       p.rmse = std::sqrt((e.sx + e.sy) / e.n);
+      p.heading_n = e.n_yaw;
+      if (e.n_yaw) p.heading_rmse = std::sqrt(e.syaw / e.n_yaw);
       points.emplace(key, p);
     }
     attach(points, s.tracking->nees, &FramePoint::nees);

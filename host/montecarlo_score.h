@@ -3,6 +3,7 @@
 // `pedtrack eval` scores Monte Carlo runs, plus what P4's consistency figures show per truth id
 // and frame index: the runs' average NEES and NIS against their χ² bounds, and the position
 // RMSE over the runs; and each run's ID switches.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,10 @@ struct FramePoint {
   std::size_t n = 0;      ///< runs whose tracks matched this truth here
   double rmse_x = 0, rmse_y = 0, rmse = 0;  ///< √(mean over those runs of the squared error), m
   std::optional<eval::ConsistencyPoint> nees, nis;
+  /// Of those runs, the ones whose track and truth rows both have yaw, and √(mean of their
+  /// squared wrapped heading error), rad (NaN when none).
+  std::size_t heading_n = 0;
+  double heading_rmse = std::nan("");
 };
 
 struct TruthSummary {
@@ -28,6 +33,8 @@ struct TruthSummary {
   std::size_t nees_frames = 0, nis_frames = 0;
   double nees_inside = 0, nis_inside = 0;  ///< fraction of those frames inside the bounds
   double rmse_mean = 0, rmse_max = 0;      ///< over the matched frames' rmse, m
+  std::size_t heading_frames = 0;          ///< matched frames with a heading_rmse
+  double heading_rmse_mean = 0, heading_rmse_max = 0;  ///< over those frames, rad
 };
 
 struct RunScore {

@@ -223,6 +223,18 @@ void Plot::marker(double x, double y, const cv::Scalar& colour, int radius) {
   cv::circle(img_, pixel(x, y), radius, colour, 2, cv::LINE_AA);
 }
 
+void Plot::scatter(const std::vector<double>& x, const std::vector<double>& y,
+                   const cv::Scalar& colour, int radius, const std::string& label) {
+  const cv::Rect clip = area_ & cv::Rect({}, img_.size());
+  cv::Mat roi = img_(clip);
+  for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) {
+    const bool ok = std::isfinite(x[i]) && std::isfinite(y[i]) && (!x_.log || x[i] > 0) &&
+                    (!y_.log || y[i] > 0);
+    if (ok) cv::circle(roi, pixel(x[i], y[i]) - clip.tl(), radius, colour, -1, cv::LINE_AA);
+  }
+  if (!label.empty()) entries_.push_back({label, colour, 0, false, std::max(1, radius)});
+}
+
 void Plot::note(const std::string& label, const cv::Scalar& colour) {
   entries_.push_back({label, colour, 0, false});
 }
@@ -258,19 +270,41 @@ void Plot::legend(Corner corner, double font_scale) {
     const auto& e = entries_[i];
     const int y = box.y + pad + int(i) * row + row / 2;
     const cv::Point a(box.x + pad, y), b(box.x + pad + swatch, y);
-    if (e.thickness > 0 && e.dashed)
+    if (e.dot > 0)
+      cv::circle(img_, (a + b) / 2, std::max(3, e.dot), e.colour, -1, cv::LINE_AA);
+    else if (e.thickness > 0 && e.dashed)
       dashedPolyline(img_, {a, b}, e.colour, e.thickness);
     else if (e.thickness > 0)
       cv::line(img_, a, b, e.colour, e.thickness, cv::LINE_AA);
     const cv::Size s = textSize(e.label, font_scale);
     text(img_, e.label, {b.x + pad, y + s.height / 2}, font_scale,
-         e.thickness > 0 ? kBlack : e.colour);
+         e.thickness > 0 || e.dot > 0 ? kBlack : e.colour);
   }
 }
 
 bool Plot::write(const std::string& path) const {
   try {
     return cv::imwrite(path, img_);
+  } catch (const cv::Exception&) {
+    return false;
+  }
+}
+
+bool writeStacked(const std::vector<const Plot*>& plots, const std::string& path) {
+  int width = 0;
+  for (const Plot* p : plots) width = std::max(width, p->image().cols);
+  std::vector<cv::Mat> rows;
+  for (const Plot* p : plots) {
+    cv::Mat m = p->image();
+    if (m.cols < width)
+      cv::copyMakeBorder(m, m, 0, 0, 0, width - m.cols, cv::BORDER_CONSTANT, kWhite);
+    rows.push_back(m);
+  }
+  if (rows.empty()) return false;
+  cv::Mat all;
+  cv::vconcat(rows, all);
+  try {
+    return cv::imwrite(path, all);
   } catch (const cv::Exception&) {
     return false;
   }

@@ -1,7 +1,8 @@
 #pragma once
 // Line plots drawn with OpenCV into a PNG: axes with ticks and labels (linear or base-10 log),
 // lines (solid or dashed, broken at NaN), horizontal reference lines, markers, a legend and a
-// title. `pedtrack eval --roc` and `pedtrack montecarlo` draw with it.
+// title; scatter dots; panels stacked into one image. `pedtrack eval --roc`, `--shape-plot` and
+// `pedtrack montecarlo` draw with it.
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ class Plot {
              const std::string& label = "");
   /// A circle marker at (x, y).
   void marker(double x, double y, const cv::Scalar& colour, int radius = 5);
+  /// A filled dot at each finite (x[i], y[i]) inside the plot area (a scatter plot). A non-empty
+  /// `label` adds a legend entry drawn as a dot.
+  void scatter(const std::vector<double>& x, const std::vector<double>& y, const cv::Scalar& colour,
+               int radius = 2, const std::string& label = "");
   /// A legend entry drawn by nothing else (e.g. "+ 3 more").
   void note(const std::string& label, const cv::Scalar& colour);
   /// Draws the legend entries collected so far in a box at `corner` of the plot area.
@@ -63,11 +68,16 @@ class Plot {
     cv::Scalar colour;
     int thickness;
     bool dashed;
+    int dot = 0;  ///< > 0: a scatter entry, a dot of this radius
   };
   cv::Mat img_;
   cv::Rect area_;  ///< the plot area in the image
   Axis x_, y_;
   std::vector<Entry> entries_;
 };
+
+/// The plots' images one above the other (the widest sets the width; narrower ones padded with
+/// white), written to `path` (PNG by the extension); false when it cannot.
+bool writeStacked(const std::vector<const Plot*>& plots, const std::string& path);
 
 }  // namespace pedtrack::cli::plot

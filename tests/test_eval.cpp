@@ -387,3 +387,140 @@ TEST_CASE("detections.csv reads with ids numbered within each frame", "[eval]") 
   CHECK(std::isnan(t.rows[0].yaw));
   CHECK_THROWS_AS(readObjectTable(dir + "/d.csv"), ConfigError);  // tracks need an id
 }
+
+namespace {
+
+// Matched pairs of one truth and one track per frame, from rows the caller owns: the track row
+// `k` at (x, 0) with the given yaw, the truth row at the same place with yaw `truth_yaw`.
+std::vector<MatchedPair> headingPairs(std::vector<ObjectRow>& rows,
+                                      const std::vector<std::pair<double, double>>& yaws) {
+  rows.assign(2 * yaws.size(), ObjectRow());
+  std::vector<MatchedPair> pairs;
+  for (std::size_t k = 0; k < yaws.size(); ++k) {
+    rows[2 * k].yaw = yaws[k].first;       // truth
+    rows[2 * k + 1].yaw = yaws[k].second;  // track
+    MatchedPair p;
+    p.frame = k;
+    p.truth = obj(1, double(k), 0);
+    p.estimate = obj(7, double(k), 0);
+    p.truth.row = &rows[2 * k];
+    p.estimate.row = &rows[2 * k + 1];
+    pairs.push_back(p);
+  }
+  return pairs;
+}
+
+}  // namespace
+
+TEST_CASE("heading RMSE: a constant offset, the wrap-around at pi, rows without yaw",
+          "[eval][heading]") {
+  std::vector<ObjectRow> rows;
+  // The track faces 0.1 rad left of the person in every frame.
+  const PairErrors constant = pairErrors(headingPairs(rows, {{0, 0.1}, {1, 1.1}, {-2, -1.9}}));
+  CHECK(constant.heading_pairs == 3);
+  CHECK(constant.headingRmse() == Approx(0.1));
+  CHECK(constant.headingMae() == Approx(0.1));
+  // yaw 3.1 against −3.1: 0.0832 rad apart across ±π, not 6.2.
+  const PairErrors wrap = pairErrors(headingPairs(rows, {{-3.1, 3.1}}));
+  CHECK(wrap.headingRmse() == Approx(2 * M_PI - 6.2).epsilon(1e-9));
+  CHECK(wrap.headingRmse() == Approx(0.083).margin(5e-4));
+  // Errors 0.3 and 0.4: RMSE √((0.09 + 0.16) / 2), MAE 0.35; a track row without yaw is skipped.
+  const PairErrors mixed = pairErrors(headingPairs(rows, {{0, 0.3}, {0, -0.4}, {0, NAN}}));
+  CHECK(mixed.pairs == 3);
+  CHECK(mixed.heading_pairs == 2);
+  CHECK(mixed.headingRmse() == Approx(std::sqrt(0.125)));
+  CHECK(mixed.headingMae() == Approx(0.35));
+  PairErrors sum = constant;
+  sum += wrap;
+  CHECK(sum.headingRmse() == Approx(std::sqrt((3 * 0.01 + std::pow(2 * M_PI - 6.2, 2)) / 4)));
+  CHECK(std::isnan(pairErrors(headingPairs(rows, {{0, NAN}})).headingRmse()));
+}
+
+TEST_CASE("range bands: errors, semi-axes and model probabilities per distance from the sensor",
+          "[eval][range]") {
+  // Tracks at ranges 5, 8 (band 0-10), 15 (10-20), 35 and 50 (30-inf), one without a sensor
+  // position (unbanded), one at 25 (20-30) without shape or probabilities.
+  struct Spec {
+    double range, dx, yaw, alpha, beta;
+    std::vector<double> probs;
+  };
+  const std::vector<Spec> specs = {{5, 0.1, 0.1, 0.20, 0.10, {0.9, 0.1}},
+                                   {8, 0.3, 0.3, 0.30, 0.14, {0.7, 0.3}},
+                                   {15, 0.2, 0.0, 0.25, 0.12, {0.2, 0.8}},
+                                   {35, 0.4, NAN, 0.22, 0.11, {0.5, 0.2, 0.3}},
+                                   {50, 0.0, NAN, 0.26, 0.13, {0.1, 0.6, 0.3}},
+                                   {NAN, 0.1, 0.1, 0.2, 0.1, {1, 0}},
+                                   {25, 0.5, NAN, NAN, NAN, {}}};
+  std::vector<ObjectRow> rows(2 * specs.size());
+  std::vector<std::vector<double>> probs(rows.size());
+  std::vector<MatchedPair> pairs;
+  for (std::size_t k = 0; k < specs.size(); ++k) {
+    const Spec& s = specs[k];
+    ObjectRow& t = rows[2 * k];
+    ObjectRow& e = rows[2 * k + 1];
+    t.yaw = 0;
+    e.sensor_x = s.range * 0.6;  // (0.6, 0.8) × range: the range is the hypotenuse
+    e.sensor_y = s.range * 0.8;
+    e.yaw = s.yaw;
+    e.alpha = s.alpha;
+    e.beta = s.beta;
+    probs[2 * k + 1] = s.probs;
+    MatchedPair p;
+    p.frame = k;
+    p.truth = obj(1, 0, 0);
+    p.estimate = obj(7, s.dx, 0);
+    p.truth.row = &t;
+    p.estimate.row = &e;
+    pairs.push_back(p);
+  }
+  const ModelProbsOf of = [&](const ObjectRow& r) -> const std::vector<double>* {
+    const auto& v = probs[std::size_t(&r - rows.data())];
+    return v.empty() ? nullptr : &v;
+  };
+  const RangeBandReport r = rangeBands(pairs, {0, 10, 20, 30}, of);
+  REQUIRE(r.bands.size() == 4);
+  CHECK(r.unbanded == 1);
+  CHECK(r.models == 3);
+  CHECK(r.bands[0].from == 0);
+  CHECK(r.bands[0].to == 10);
+  CHECK(std::isinf(r.bands[3].to));
+
+  const RangeBand& near = r.bands[0];
+  CHECK(near.errors.pairs == 2);
+  CHECK(near.errors.rmse() == Approx(std::sqrt((0.01 + 0.09) / 2)));
+  CHECK(near.errors.headingRmse() == Approx(std::sqrt((0.01 + 0.09) / 2)));
+  CHECK(near.shape_rows == 2);
+  CHECK(near.alphaMean() == Approx(0.25));
+  CHECK(near.alpha_min == Approx(0.20));
+  CHECK(near.alpha_max == Approx(0.30));
+  CHECK(near.betaMean() == Approx(0.12));
+  CHECK(near.probMean(0) == Approx(0.8));
+  CHECK(near.probMean(1) == Approx(0.2));
+  CHECK(std::isnan(near.probMean(2)));  // no row of the band has a third model
+
+  CHECK(r.bands[1].errors.pairs == 1);
+  CHECK(r.bands[1].probMean(1) == Approx(0.8));
+  // 20-30: a match without shape, yaw or probabilities.
+  CHECK(r.bands[2].errors.pairs == 1);
+  CHECK(r.bands[2].errors.rmse() == Approx(0.5));
+  CHECK(r.bands[2].shape_rows == 0);
+  CHECK(std::isnan(r.bands[2].alphaMean()));
+  CHECK(std::isnan(r.bands[2].errors.headingRmse()));
+  CHECK(std::isnan(r.bands[2].probMean(0)));
+  // 30-inf: two rows, three models each.
+  const RangeBand& far = r.bands[3];
+  CHECK(far.errors.pairs == 2);
+  CHECK(far.errors.heading_pairs == 0);
+  CHECK(far.alphaMean() == Approx(0.24));
+  CHECK(far.beta_max == Approx(0.13));
+  CHECK(far.probMean(0) == Approx(0.3));
+  CHECK(far.probMean(1) == Approx(0.4));
+  CHECK(far.probMean(2) == Approx(0.3));
+
+  // Without a model-probability source, or with the first edge beyond the near rows.
+  const RangeBandReport plain = rangeBands(pairs, {10, 30});
+  CHECK(plain.models == 0);
+  CHECK(plain.unbanded == 3);  // ranges 5, 8 and the one without a sensor position
+  CHECK(plain.bands[0].errors.pairs == 2);
+  CHECK(plain.bands[1].errors.pairs == 2);
+}

@@ -321,3 +321,142 @@ TEST_CASE("eval scores a simulated run: the truth as tracks, then a shifted copy
                                dir + "/shifted.csv", "--threshold", "0.15", "--json"});
   CHECK(jsonValue(strict.output, "mota") < -0.9);
 }
+
+namespace {
+
+// One person and one track over 8 frames; the track's sensor range (sensor_x, sensor_y = 0)
+// puts frames 0-1 in 0-10 m, 2-3 in 10-20, 4 in 20-30, 5-6 in 30+ and frame 7 in no band (no
+// sensor position). Per band: position errors dx, heading errors (truth yaw, track yaw), alpha,
+// beta and model_probs as listed.
+std::pair<std::string, std::string> bandedPair() {
+  struct Row {
+    const char* sensor_x;
+    double range, dx, yaw_true, yaw;
+    const char *alpha, *beta, *probs;
+  };
+  const Row rows[] = {
+      {"5", 5, 0.1, 0, 0.1, "0.20", "0.10", "0.9;0.05;0.05"},
+      {"8", 8, 0.3, 0, -0.3, "0.30", "0.14", "0.7;0.2;0.1"},
+      {"12", 12, 0.2, -3.1, 3.1, "0.25", "0.12", "0.2;0.7;0.1"},
+      {"18", 18, -0.2, -3.1, 3.1, "0.25", "0.12", "0.2;0.7;0.1"},
+      {"25", 25, 0, 0, 0, "", "", ""},
+      {"31", 31, 0.1, 0, 0, "0.22", "0.11", "0.1;0.1;0.8"},
+      {"40", 40, 0.1, 0, 0, "0.26", "0.13", "0.3;0.1;0.6"},
+      {"", 45, 0.1, 0, 0, "0.5", "0.5", "1;0;0"},
+  };
+  std::string truth = kTruthHeader, tracks = kTracksHeader;
+  for (int k = 0; k < 8; ++k) {
+    const Row& r = rows[k];
+    const double t = 100 + 0.1 * k;
+    truth += mrpt::format("%.6f,%d,1,%.4f,0,%.4f,0,%.4f,1,0,0.25,0.15,1.7,50,,,,\n", t, k, r.range,
+                          r.range, r.yaw_true);
+    tracks += mrpt::format("%.6f,%d,7,%.4f,0,%s,%s,%.4f,1,0,%s,%s,,,,0.9,%s,confirmed,\n", t, k,
+                           r.range + r.dx, r.sensor_x, *r.sensor_x ? "0" : "", r.yaw, r.alpha,
+                           r.beta, r.probs);
+  }
+  return {truth, tracks};
+}
+
+// The i-th object of "bands" in the JSON output.
+std::string band(const std::string& json, int i) {
+  std::size_t p = json.find("\"bands\": [");
+  for (int k = 0; k <= i; ++k) p = json.find("{\"from_m\"", p + 1);
+  return json.substr(p, json.find('}', json.find("\"model_probs\"", p)) - p + 1);
+}
+
+}  // namespace
+
+TEST_CASE("eval --range-bins: errors, semi-axes and model probabilities per distance band",
+          "[eval_cli][range]") {
+  const std::string dir = freshDir("eval_cli_range_bins");
+  const auto [truth, tracks] = bandedPair();
+  writeFile(dir + "/truth.csv", truth);
+  writeFile(dir + "/tracks.csv", tracks);
+  const std::vector<std::string> base = {"eval", "--truth", dir + "/truth.csv", "--tracks",
+                                         dir + "/tracks.csv"};
+  auto run = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = runHost(args);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    return r.output;
+  };
+  const double wrap = 2 * M_PI - 6.2;  // 3.1 against −3.1
+
+  const std::string json = run({"--range-bins", "0,10,20,30", "--json"});
+  CHECK(jsonValue(json, "unbanded") == 1);
+  CHECK_THAT(json, Catch::Contains("\"models\": [\"prob_1\", \"prob_2\", \"prob_3\"]"));
+  const std::string b0 = band(json, 0), b1 = band(json, 1), b2 = band(json, 2), b3 = band(json, 3);
+  CHECK(jsonValue(b0, "from_m") == 0);
+  CHECK(jsonValue(b0, "to_m") == 10);
+  CHECK(jsonValue(b0, "pairs") == 2);
+  CHECK(jsonValue(b0, "position_rmse_m") == Approx(std::sqrt(0.05)));
+  CHECK(jsonValue(b0, "heading_rmse_rad") == Approx(std::sqrt(0.05)));
+  CHECK(jsonValue(b0, "alpha_mean_m") == Approx(0.25));
+  CHECK(jsonValue(b0, "alpha_min_m") == Approx(0.20));
+  CHECK(jsonValue(b0, "alpha_max_m") == Approx(0.30));
+  CHECK(jsonValue(b0, "beta_mean_m") == Approx(0.12));
+  CHECK(jsonValue(b0, "prob_1") == Approx(0.8));
+  CHECK(jsonValue(b0, "prob_2") == Approx(0.125));
+  CHECK(jsonValue(b0, "prob_3") == Approx(0.075));
+  CHECK(jsonValue(b1, "pairs") == 2);
+  CHECK(jsonValue(b1, "position_rmse_m") == Approx(0.2));
+  CHECK(jsonValue(b1, "heading_rmse_rad") == Approx(wrap).epsilon(1e-4));
+  CHECK(jsonValue(b1, "prob_2") == Approx(0.7));
+  CHECK(jsonValue(b2, "pairs") == 1);
+  CHECK(jsonValue(b2, "shape_rows") == 0);
+  CHECK_THAT(b2, Catch::Contains("\"alpha_mean_m\": null"));
+  CHECK_THAT(b2, Catch::Contains("\"prob_1\": null"));
+  CHECK_THAT(b3, Catch::Contains("\"to_m\": null"));
+  CHECK(jsonValue(b3, "pairs") == 2);
+  CHECK(jsonValue(b3, "alpha_mean_m") == Approx(0.24));
+  CHECK(jsonValue(b3, "prob_3") == Approx(0.7));
+  // The pooled heading RMSE of every match: 0.1, 0.3, 2 × wrap, 4 × 0 over 8 pairs.
+  CHECK(jsonValue(json, "heading_rmse_rad") ==
+        Approx(std::sqrt((0.01 + 0.09 + 2 * wrap * wrap) / 8)).epsilon(1e-4));
+
+  const std::string text = run({"--range-bins", "0,10,20,30", "--model-names", "ellipse,box,cog"});
+  CHECK_THAT(text, Catch::Contains("heading RMSE        0.1193 rad"));
+  CHECK_THAT(text, Catch::Contains("7 of 8 matches in a band"));
+  CHECK_THAT(text, Catch::Matches("(.|\n)*range \\(m\\) .* ellipse +box +cog\n(.|\n)*"));
+  CHECK_THAT(text, Catch::Contains("  0 - 10             2     0.2236   0.2236 rad    0.250   "
+                                   "0.200   0.300    0.120   0.100   0.140    0.8000    0.1250    "
+                                   "0.0750\n"));
+  CHECK_THAT(text, Catch::Contains("  30 - inf           2     0.1000   0.0000 rad    0.240"));
+  // Default off: the usual report only.
+  CHECK(run({}).find("By distance") == std::string::npos);
+  // A band edge list of one: everything from 20 m on.
+  CHECK(jsonValue(run({"--range-bins", "20", "--json"}), "unbanded") == 5);
+
+  SECTION("--shape-plot with bounds") {
+    const std::string png = dir + "/shape.png";
+    const std::string out = run({"--shape-plot", png, "--shape-bounds", "0.2,0.3,0.1,0.2"});
+    CHECK_THAT(out, Catch::Contains("shape plot: " + png + " (6 matched track rows"));
+    CHECK(readFile(png).substr(1, 3) == "PNG");
+  }
+
+  SECTION("bad options: one line, exit 2") {
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"--range-bins", "0,20,10"}, "--range-bins: the edges must increase ('0,20,10')"},
+        {{"--range-bins", "0,x"}, "--range-bins: 'x' is not a distance >= 0 m"},
+        {{"--model-names", "a,b"}, "--model-names needs --range-bins"},
+        {{"--shape-plot", dir + "/s.png", "--shape-bounds", "0.1,0.2,0.3"},
+         "--shape-bounds: expected amin,amax,bmin,bmax (4 numbers in m)"},
+        {{"--shape-bounds", "0.1,0.2,0.1,0.2"}, "--shape-bounds needs --shape-plot"},
+    };
+    for (const auto& [extra, message] : cases) {
+      std::vector<std::string> args = base;
+      args.insert(args.end(), extra.begin(), extra.end());
+      const auto r = runHost(args);
+      INFO(r.output);
+      CHECK(r.exit_code == 2);
+      CHECK_THAT(r.output, Catch::StartsWith("error: pedtrack eval: ") && Catch::Contains(message));
+      CHECK(lines(r.output).size() == 1);
+    }
+    const auto det = runHost({"eval", "--truth", dir + "/truth.csv", "--detections",
+                              dir + "/tracks.csv", "--range-bins", "0,10"});
+    CHECK(det.exit_code == 2);
+    CHECK_THAT(det.output, Catch::Contains("--range-bins applies to --tracks only"));
+  }
+}

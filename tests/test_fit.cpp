@@ -156,7 +156,7 @@ Points2 arc(double cx, double cy, double r, double from, double to, int n, doubl
 
 }  // namespace
 
-TEST_CASE("algebraic circle: exact points give the circle; degenerate input is refused",
+TEST_CASE("algebraic circle: exact points give the circle, degenerate input is refused",
           "[fit][circle]") {
   std::mt19937 rng(1);
   const Points2 pts = arc(1.5, -0.3, 0.055, -1.0, 1.2, 9, 0, rng);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
+#include "montecarlo_compare.h"
 #include "montecarlo_plots.h"
 #include "montecarlo_score.h"
 #include "pedtrack/errors.h"
@@ -136,6 +137,147 @@ TEST_CASE("montecarlo scoring: RMSE per frame, pooled NEES, ID switches per run"
       CHECK(img.cols == 900);
       CHECK(img.rows == 520);
     }
+  }
+}
+
+TEST_CASE("montecarlo heading RMSE: per frame and pooled, wrapped at pi, skipped without yaw",
+          "[montecarlo][heading]") {
+  const std::string dir = freshDir("montecarlo_heading");
+  // The person faces −3.1 rad; run a's track faces 3.1 (0.0832 rad off across ±π), run b's
+  // −3.0 (0.1 rad off), run c's track rows have no yaw.
+  std::string truth = "t,frame,id,x,y,yaw,visible_points\n";
+  std::string a = "t,frame,track,x,y,yaw\n", b = a, c = "t,frame,track,x,y\n";
+  for (int k = 0; k < 6; ++k) {
+    const double t = 100 + 0.1 * k;
+    truth += mrpt::format("%.6f,%d,1,%.4f,0,-3.1,40\n", t, k, 0.1 * k);
+    a += mrpt::format("%.6f,%d,7,%.4f,0,3.1\n", t, k, 0.1 * k + 0.1);
+    b += mrpt::format("%.6f,%d,7,%.4f,0,%s\n", t, k, 0.1 * k, k == 2 ? "" : "-3.0");
+    c += mrpt::format("%.6f,%d,7,%.4f,0\n", t, k, 0.1 * k);
+  }
+  writeFile(dir + "/truth.csv", truth);
+  writeFile(dir + "/a.csv", a);
+  writeFile(dir + "/b.csv", b);
+  writeFile(dir + "/c.csv", c);
+  const std::string tr = dir + "/truth.csv";
+  const cli::MonteCarloScore s = cli::scoreMonteCarlo(
+      {tr, tr, tr}, {dir + "/a.csv", dir + "/b.csv", dir + "/c.csv"}, eval::TrackingOptions());
+  const double wrap = 2 * M_PI - 6.2;
+  REQUIRE(s.points.size() == 6);
+  CHECK(s.points[0].n == 3);
+  CHECK(s.points[0].heading_n == 2);
+  CHECK(s.points[0].heading_rmse == Approx(std::sqrt((wrap * wrap + 0.01) / 2)));
+  CHECK(s.points[2].heading_n == 1);  // run b's row of frame 2 has no yaw
+  CHECK(s.points[2].heading_rmse == Approx(wrap));
+  REQUIRE(s.tracking);
+  CHECK(s.tracking->errors.heading_pairs == 11);
+  CHECK(s.tracking->errors.headingRmse() == Approx(std::sqrt((6 * wrap * wrap + 5 * 0.01) / 11)));
+  REQUIRE(s.truths.size() == 1);
+  CHECK(s.truths[0].heading_frames == 6);
+  CHECK(s.truths[0].heading_rmse_max == Approx(s.points[0].heading_rmse));
+
+  const auto files = cli::drawConsistencyPlots(dir, s, "heading");
+  CHECK(files == std::vector<std::string>{"rmse_1.png", "heading_1.png"});
+  CHECK(cv::imread(dir + "/heading_1.png").cols == 900);
+
+  // Only run c (no yaw): no heading values, no heading plot.
+  const cli::MonteCarloScore none =
+      cli::scoreMonteCarlo({tr}, {dir + "/c.csv"}, eval::TrackingOptions());
+  CHECK(none.points[0].heading_n == 0);
+  CHECK(std::isnan(none.points[0].heading_rmse));
+  CHECK(none.truths[0].heading_frames == 0);
+  CHECK(std::isnan(none.tracking->errors.headingRmse()));
+  const std::string quiet = freshDir("montecarlo_heading_none");
+  CHECK(cli::drawConsistencyPlots(quiet, none, "x") == std::vector<std::string>{"rmse_1.png"});
+}
+
+namespace {
+
+// A montecarlo output directory written by hand: montecarlo.json with the compared figures and
+// consistency.csv with truth 1 over frames 0-2 and 4 (frame 3 unmatched), `d` m and `h` rad off.
+void handMadeResult(const std::string& dir, double rmse, const std::string& heading, double mota,
+                    int switches, double d, const std::string& h) {
+  fs::create_directories(dir);
+  writeFile(dir + "/montecarlo.json",
+            mrpt::format("{\n  \"mode\": \"montecarlo\",\n  \"runs\": 4,\n  \"runs_scored\": 3,\n"
+                         "  \"tracking\": {\n  \"clear_mot\": {\"id_switches\": %d, \"mota\": "
+                         "%g},\n  \"errors\": {\"position_rmse_m\": %g, \"heading_rmse_rad\": "
+                         "%s}\n},\n  \"run_list\": [{\"mota\": 0.1}],\n  \"t0\": 100.000000\n}\n",
+                         switches, mota, rmse, heading.c_str()));
+  std::string csv =
+      "truth_id,frame,t,n,nees_mean,nees_lower,nees_upper,nees_inside,nis_mean,nis_lower,"
+      "nis_upper,nis_inside,rmse_x,rmse_y,rmse,heading_n,heading_rmse\n";
+  for (int k : {0, 1, 2, 4})
+    csv +=
+        mrpt::format("1,%d,%.6f,3,,,,,,,,,,,%g,3,%s\n", k, 100.5 + 0.1 * k, d * (k + 1), h.c_str());
+  writeFile(dir + "/consistency.csv", csv);
+}
+
+}  // namespace
+
+TEST_CASE("montecarlo --compare: a table and error curves of several result directories",
+          "[montecarlo][compare]") {
+  const std::string dir = freshDir("montecarlo_compare");
+  handMadeResult(dir + "/kf", 0.0523, "0.21", 0.9, 2, 0.05, "0.2");
+  handMadeResult(dir + "/imm", 0.031, "null", 0.95, 0, 0.03, "");
+
+  const cli::CompareEntry kf = cli::readMonteCarloDir(dir + "/kf", "kf_bb");
+  CHECK(kf.runs == 3);
+  CHECK(kf.position_rmse_m == Approx(0.0523));
+  CHECK(kf.heading_rmse_rad == Approx(0.21));
+  CHECK(kf.mota == Approx(0.9));  // the pooled MOTA, not a run's
+  REQUIRE(kf.id_switches);
+  CHECK(*kf.id_switches == 2);
+  CHECK(kf.t0 == Approx(100));
+  REQUIRE(kf.curves.count(1));
+  CHECK(kf.curves.at(1).frame == std::vector<std::size_t>{0, 1, 2, 4});
+  CHECK(kf.curves.at(1).rmse[3] == Approx(0.25));
+  const cli::CompareEntry imm = cli::readMonteCarloDir(dir + "/imm", "imm_shape");
+  CHECK(std::isnan(imm.heading_rmse_rad));
+  CHECK(std::isnan(imm.curves.at(1).heading[0]));
+
+  const std::string md = cli::compareMarkdown({kf, imm});
+  CHECK(md ==
+        "| label     | position RMSE (mm) | heading RMSE (rad) |   MOTA | ID switches | runs |\n"
+        "| :-------- | -----------------: | -----------------: | -----: | ----------: | ---: |\n"
+        "| kf_bb     |               52.3 |             0.2100 | 0.9000 |           2 |    3 |\n"
+        "| imm_shape |               31.0 |                  - | 0.9500 |           0 |    3 |\n");
+  const std::string plots = freshDir("montecarlo_compare_plots");
+  CHECK(cli::drawCompareErrors(plots, {kf, imm}) == std::vector<std::string>{"errors_1.png"});
+  const cv::Mat img = cv::imread(plots + "/errors_1.png");
+  CHECK(img.cols == 900);
+  CHECK(img.rows == 800);  // two stacked panels
+
+  SECTION("the command: stdout, compare.md, the plot; errors in one line") {
+    const std::string out = dir + "/out";
+    const auto r = runHost({"montecarlo", "--compare", dir + "/kf", dir + "/imm", "--labels",
+                            "kf_bb,imm_shape", "--out", out});
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(readFile(out + "/compare.md") == md);
+    CHECK_THAT(r.output, Catch::StartsWith(md));
+    CHECK(fs::exists(out + "/errors_1.png"));
+    // Labels default to the directory names.
+    const auto unnamed = runHost({"montecarlo", "--compare", dir + "/kf/", "--out", out});
+    CHECK_THAT(unnamed.output, Catch::Contains("| kf    |"));
+
+    const auto missing = runHost({"montecarlo", "--compare", dir + "/kf", dir + "/nope", "--labels",
+                                  "a,b", "--out", dir + "/out2"});
+    CHECK(missing.exit_code == 2);
+    CHECK(missing.output ==
+          "error: pedtrack montecarlo --compare: '" + dir + "/nope': no such directory\n");
+    const auto labels = runHost({"montecarlo", "--compare", dir + "/kf", dir + "/imm", "--labels",
+                                 "a,b,c", "--out", dir + "/out2"});
+    CHECK(labels.exit_code == 2);
+    CHECK_THAT(labels.output, Catch::Contains("--labels names 3 labels for 2 directories"));
+    CHECK(lines(labels.output).size() == 1);
+    const auto not_mc =
+        runHost({"montecarlo", "--compare", dir, "--labels", "a", "--out", dir + "/out2"});
+    CHECK(not_mc.exit_code == 2);
+    CHECK_THAT(not_mc.output, Catch::Contains("no montecarlo.json"));
+    CHECK_FALSE(fs::exists(dir + "/out2"));  // nothing written
+    const auto help = runHost({"montecarlo", "--compare", "--help"});
+    CHECK(help.exit_code == 0);
+    CHECK_THAT(help.output, Catch::Contains("usage: pedtrack montecarlo --compare DIR1 DIR2"));
   }
 }
 
@@ -275,15 +417,37 @@ TEST_CASE("montecarlo with a tracker: consistency.csv, plots and ID switches", "
   REQUIRE(rows.size() > 5);
   CHECK(rows[0] ==
         "truth_id,frame,t,n,nees_mean,nees_lower,nees_upper,nees_inside,nis_mean,nis_lower,"
-        "nis_upper,nis_inside,rmse_x,rmse_y,rmse");
+        "nis_upper,nis_inside,rmse_x,rmse_y,rmse,heading_n,heading_rmse");
   CHECK(fs::exists(out + "/nees_1.png"));
   CHECK(fs::exists(out + "/nis_1.png"));
   CHECK(fs::exists(out + "/rmse_1.png"));
-  CHECK(fs::exists(out + "/llr.png"));  // imm_pdaf writes existence.csv
+  CHECK(fs::exists(out + "/heading_1.png"));  // imm_pdaf's tracks have yaw
+  CHECK(fs::exists(out + "/llr.png"));        // imm_pdaf writes existence.csv
   const std::string json = readFile(out + "/montecarlo.json");
   CHECK_THAT(json, Catch::Contains("\"no_tracks\": false"));
   CHECK(jsonValue(json, "runs_without_switch") <= 3);
   CHECK(jsonValue(json, "nees_frames") > 5);
+  const double heading = jsonValue(json, "heading_rmse_rad");
+  CHECK(heading > 0);
+  CHECK(heading < 1);
+  CHECK(jsonValue(json, "heading_frames") > 5);
+  CHECK_THAT(r.output, Catch::Contains("heading RMSE"));
+
+  SECTION("--compare puts this result next to itself") {
+    const std::string cmp = dir + "/cmp";
+    const auto c =
+        runHost({"montecarlo", "--compare", out, out, "--labels", "first,second", "--out", cmp});
+    INFO(c.output);
+    REQUIRE(c.exit_code == 0);
+    const auto rows = lines(readFile(cmp + "/compare.md"));
+    REQUIRE(rows.size() == 4);
+    CHECK_THAT(rows[2], Catch::StartsWith("| first "));
+    CHECK_THAT(rows[3], Catch::StartsWith("| second "));
+    CHECK(rows[2].substr(10) == rows[3].substr(10));
+    CHECK_THAT(rows[2], Catch::Contains(mrpt::format(" %.4f |", heading)));
+    CHECK_THAT(c.output, Catch::Contains(readFile(cmp + "/compare.md")));
+    CHECK(cv::imread(cmp + "/errors_1.png").rows == 800);
+  }
 }
 
 TEST_CASE("montecarlo rejects bad arguments with exit code 2", "[montecarlo]") {

@@ -49,6 +49,9 @@ double PairErrors::speedMae() const {
 double PairErrors::velocityRmse() const {
   return std::sqrt(ratio(velocity_sq_sum, speed_pairs));
 }
+double PairErrors::headingRmse() const {
+  return std::sqrt(ratio(heading_sq_sum, heading_pairs));
+}
 
 PairErrors& PairErrors::operator+=(const PairErrors& o) {
   pairs += o.pairs;
@@ -64,6 +67,7 @@ PairErrors& PairErrors::operator+=(const PairErrors& o) {
   speed_pairs += o.speed_pairs;
   speed_sum += o.speed_sum;
   velocity_sq_sum += o.velocity_sq_sum;
+  heading_sq_sum += o.heading_sq_sum;
   return *this;
 }
 
@@ -81,7 +85,9 @@ PairErrors pairErrors(const std::vector<MatchedPair>& pairs) {
     if (!r || !t) continue;
     if (std::isfinite(r->yaw) && std::isfinite(t->yaw)) {
       ++e.heading_pairs;
-      e.heading_sum += std::fabs(wrapAngle(r->yaw - t->yaw));
+      const double d = wrapAngle(r->yaw - t->yaw);
+      e.heading_sum += std::fabs(d);
+      e.heading_sq_sum += d * d;
     }
     if (r->hasShape() && t->hasShape()) {
       ++e.shape_pairs;
@@ -95,6 +101,58 @@ PairErrors pairErrors(const std::vector<MatchedPair>& pairs) {
     }
   }
   return e;
+}
+
+double RangeBand::alphaMean() const {
+  return ratio(alpha_sum, shape_rows);
+}
+double RangeBand::betaMean() const {
+  return ratio(beta_sum, shape_rows);
+}
+double RangeBand::probMean(std::size_t model) const {
+  return model < prob_rows.size() ? ratio(prob_sum[model], prob_rows[model]) : std::nan("");
+}
+
+RangeBandReport rangeBands(const std::vector<MatchedPair>& pairs, const std::vector<double>& edges,
+                           const ModelProbsOf& probs) {
+  RangeBandReport rep;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    RangeBand b;
+    b.from = edges[i];
+    b.to = i + 1 < edges.size() ? edges[i + 1] : INFINITY;
+    rep.bands.push_back(b);
+  }
+  for (const MatchedPair& p : pairs) {
+    const ObjectRow* r = p.estimate.row;
+    const double range = r ? std::hypot(r->sensor_x, r->sensor_y) : std::nan("");
+    // The last band whose lower edge the range reaches.
+    auto it = std::upper_bound(edges.begin(), edges.end(), range);
+    if (!std::isfinite(range) || it == edges.begin()) {
+      ++rep.unbanded;
+      continue;
+    }
+    RangeBand& b = rep.bands[std::size_t(it - edges.begin()) - 1];
+    b.errors += pairErrors({p});
+    if (r->hasShape()) {
+      ++b.shape_rows;
+      b.alpha_sum += r->alpha;
+      b.alpha_min = std::min(b.alpha_min, r->alpha);
+      b.alpha_max = std::max(b.alpha_max, r->alpha);
+      b.beta_sum += r->beta;
+      b.beta_min = std::min(b.beta_min, r->beta);
+      b.beta_max = std::max(b.beta_max, r->beta);
+    }
+    const std::vector<double>* pr = probs ? probs(*r) : nullptr;
+    if (!pr) continue;
+    if (b.prob_sum.size() < pr->size()) {
+      b.prob_sum.resize(pr->size(), 0);
+      b.prob_rows.resize(pr->size(), 0);
+    }
+    for (std::size_t m = 0; m < pr->size(); ++m)
+      if (std::isfinite((*pr)[m])) b.prob_sum[m] += (*pr)[m], ++b.prob_rows[m];
+    rep.models = std::max(rep.models, pr->size());
+  }
+  return rep;
 }
 
 }  // namespace pedtrack::eval

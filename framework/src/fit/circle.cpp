@@ -21,7 +21,9 @@
 #include "pedtrack/fit/circle.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace pedtrack::fit {
 namespace {
@@ -186,6 +188,91 @@ double circleResidual(const Points2& pts, const Circle& c) {
     s += e * e;
   }
   return std::sqrt(s / double(pts.size()));
+}
+
+namespace {
+
+// The circle through three points (false when they are collinear or coincide), computed relative
+// to the first point.
+bool circleThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                   Circle& out) {
+  const Eigen::Vector2d p = b - a, q = c - a;
+  const double d = 2 * (p.x() * q.y() - p.y() * q.x());
+  const double scale = p.squaredNorm() * q.squaredNorm();
+  if (!(d * d > 1e-24 * scale) || !(scale > 0)) return false;
+  const double pp = p.squaredNorm(), qq = q.squaredNorm();
+  const double ux = (q.y() * pp - p.y() * qq) / d, uy = (p.x() * qq - q.x() * pp) / d;
+  out = {a.x() + ux, a.y() + uy, std::hypot(ux, uy)};
+  return std::isfinite(out.r);
+}
+
+// Inlier count and Σ squared geometric distances of the inliers.
+int circleInliers(const Points2& pts, const Circle& c, double th, double& sq) {
+  int n = 0;
+  sq = 0;
+  for (const auto& p : pts) {
+    const double e = std::abs(std::hypot(p.x() - c.x, p.y() - c.y) - c.r);
+    if (e <= th) {
+      ++n;
+      sq += e * e;
+    }
+  }
+  return n;
+}
+
+}  // namespace
+
+bool fitCircleRansac(const Points2& pts, const CircleRansacParams& params, std::mt19937& rng,
+                     Circle& out, int* inliers) {
+  const int M = int(pts.size());
+  if (M < 3 || !(params.r_min >= 0) || !(params.r_max >= params.r_min)) return false;
+  const int m = std::max(1, params.max_iterations);
+  const double C = params.confidence;
+  int N = m;
+  std::vector<int> idx(M);
+  std::iota(idx.begin(), idx.end(), 0);
+  Circle best;
+  int best_n = -1;
+  double best_sq = 0;
+  for (int k = 0; k < N; ++k) {
+    for (int i = 0; i < 3; ++i) {  // partial Fisher–Yates: 3 distinct points
+      std::uniform_int_distribution<int> pick(i, M - 1);
+      std::swap(idx[i], idx[pick(rng)]);
+    }
+    Circle c;
+    if (!circleThrough(pts[idx[0]], pts[idx[1]], pts[idx[2]], c) || c.r < params.r_min ||
+        c.r > params.r_max)
+      continue;
+    double sq = 0;
+    const int n = circleInliers(pts, c, params.inlier_threshold, sq);
+    if (n > best_n || (n == best_n && sq < best_sq)) {
+      best = c;
+      best_n = n;
+      best_sq = sq;
+      // Adaptive count log(1 − C)/log(1 − w³) from the best inlier fraction w.
+      const double w3 = std::pow(double(n) / M, 3);
+      if (!(C > 0) || !(w3 < 1)) {
+        N = std::min(N, k + 1);
+      } else if (C < 1 && w3 > 0) {
+        const double need = std::ceil(std::log(1 - C) / std::log1p(-w3));
+        if (need < N) N = std::max(1, int(need));
+      }
+    }
+  }
+  if (best_n < 0) return false;
+  Points2 in;
+  in.reserve(best_n);
+  for (const auto& p : pts)
+    if (std::abs(std::hypot(p.x() - best.x, p.y() - best.y) - best.r) <= params.inlier_threshold)
+      in.push_back(p);
+  Circle refit;
+  if (fitCircleBounded(in, params.r_min, params.r_max, refit)) best = refit;
+  out = best;
+  if (inliers) {
+    double sq = 0;
+    *inliers = circleInliers(pts, best, params.inlier_threshold, sq);
+  }
+  return true;
 }
 
 }  // namespace pedtrack::fit

@@ -1,6 +1,8 @@
 #include "pedtrack/track/motion_models.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace pedtrack::track {
 
@@ -119,6 +121,36 @@ Eigen::MatrixXd Unicycle::noise(const Eigen::VectorXd& x, double dt) const {
 }
 
 Eigen::Vector2d Unicycle::velocity(const Eigen::VectorXd& x) const {
+  return {x(3) * std::cos(x(2)), x(3) * std::sin(x(2))};
+}
+
+ShapeUnicycle::ShapeUnicycle(Eigen::VectorXd rates) : rates_(std::move(rates)) {
+  if (rates_.size() != 6 || !(rates_.array() >= 0).all())
+    throw std::invalid_argument("the shape unicycle needs 6 non-negative noise rates");
+}
+
+Eigen::VectorXd ShapeUnicycle::predict(const Eigen::VectorXd& x, double dt) const {
+  Eigen::VectorXd y = x;
+  y(0) += x(3) * std::cos(x(2)) * dt;
+  y(1) += x(3) * std::sin(x(2)) * dt;
+  return y;
+}
+
+Eigen::MatrixXd ShapeUnicycle::jacobian(const Eigen::VectorXd& x, double dt) const {
+  const double s = std::sin(x(2)), c = std::cos(x(2)), v = x(3);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(6, 6);
+  A(0, 2) = -v * s * dt;
+  A(0, 3) = c * dt;
+  A(1, 2) = v * c * dt;
+  A(1, 3) = s * dt;
+  return A;
+}
+
+Eigen::MatrixXd ShapeUnicycle::noise(const Eigen::VectorXd&, double dt) const {
+  return (rates_ * dt).asDiagonal();
+}
+
+Eigen::Vector2d ShapeUnicycle::velocity(const Eigen::VectorXd& x) const {
   return {x(3) * std::cos(x(2)), x(3) * std::sin(x(2))};
 }
 

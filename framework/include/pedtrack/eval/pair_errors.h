@@ -5,6 +5,8 @@
 //  - shape: an ellipse (α, β, yaw) is the same as (β, α, yaw + 90°), so the larger semi-axis is
 //    compared with the larger one and the smaller with the smaller, when both rows have α, β;
 //  - speed: | |v| − |v_true| | and the velocity-vector RMSE, when both rows have vx, vy.
+#include <cmath>
+#include <functional>
 #include <vector>
 
 #include "pedtrack/eval/clear_mot.h"
@@ -20,6 +22,7 @@ struct PairErrors {
   double major_sum = 0, minor_sum = 0;
   std::size_t speed_pairs = 0;
   double speed_sum = 0, velocity_sq_sum = 0;
+  double heading_sq_sum = 0;  ///< rad², of the heading pairs
 
   double rmse() const;
   double mae() const;
@@ -30,6 +33,7 @@ struct PairErrors {
   double minorMae() const;    ///< m, smaller semi-axis
   double speedMae() const;    ///< m/s
   double velocityRmse() const;
+  double headingRmse() const;  ///< rad, √ of the mean squared wrapped heading error
   PairErrors& operator+=(const PairErrors& o);
 };
 
@@ -37,5 +41,38 @@ PairErrors pairErrors(const std::vector<MatchedPair>& pairs);
 
 /// An angle wrapped to (−π, π].
 double wrapAngle(double a);
+
+/// The matches of one distance band from the sensor, measured at the estimate (its row's
+/// sensor_x, sensor_y): [from, to) m.
+struct RangeBand {
+  double from = 0, to = INFINITY;
+  PairErrors errors;  ///< position, heading, shape, speed errors of the band's pairs
+  /// Semi-axes of the band's estimate rows that have alpha, beta (m).
+  std::size_t shape_rows = 0;
+  double alpha_sum = 0, alpha_min = INFINITY, alpha_max = -INFINITY;
+  double beta_sum = 0, beta_min = INFINITY, beta_max = -INFINITY;
+  /// Model probabilities of the estimate rows that have them: per model index, the sum and the
+  /// number of rows with that model.
+  std::vector<double> prob_sum;
+  std::vector<std::size_t> prob_rows;
+
+  double alphaMean() const;                  ///< m, NaN without shape rows
+  double betaMean() const;                   ///< m
+  double probMean(std::size_t model) const;  ///< NaN when no row has that model
+};
+
+struct RangeBandReport {
+  std::vector<RangeBand> bands;  ///< one per edge: [edge i, edge i+1), the last to ∞
+  std::size_t unbanded = 0;      ///< pairs whose estimate has no range or is nearer than edge 0
+  std::size_t models = 0;        ///< the most model probabilities of any banded row
+};
+
+/// An estimate row's model probabilities (tracks.csv `model_probs`), null when it has none.
+using ModelProbsOf = std::function<const std::vector<double>*(const ObjectRow&)>;
+
+/// Sorts `pairs` into the bands of increasing `edges` (m) by the distance of the estimate row's
+/// (sensor_x, sensor_y) from the sensor. `probs` may be empty (no model probabilities).
+RangeBandReport rangeBands(const std::vector<MatchedPair>& pairs, const std::vector<double>& edges,
+                           const ModelProbsOf& probs = {});
 
 }  // namespace pedtrack::eval

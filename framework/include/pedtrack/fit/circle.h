@@ -1,6 +1,7 @@
 #pragma once
 // Least-squares circle fits on planar points.
 #include <Eigen/Core>
+#include <random>
 #include <vector>
 
 namespace pedtrack::fit {
@@ -25,5 +26,20 @@ bool fitCircleBounded(const Points2& pts, double r_min, double r_max, Circle& ou
 
 /// Root mean square of the geometric distances | |pᵢ − c| − r | (m).
 double circleResidual(const Points2& pts, const Circle& c);
+
+struct CircleRansacParams {
+  double r_min = 0.10, r_max = 0.35;  ///< radius bounds (m)
+  double inlier_threshold = 0.03;     ///< a point within this of the circle is an inlier (m)
+  int max_iterations = 100;           ///< samples of 3 points at most
+  double confidence = 0.95;           ///< adaptive stop, as fitEllipseRansac
+};
+
+/// RANSAC circle (P0's KF-circle observations, P0 ref. 15): circles through 3 random points
+/// with a radius inside the bounds, scored by their inlier count (ties: smaller residual), then
+/// refitted on the winner's inliers with fitCircleBounded. `inliers` receives the count (the
+/// points within `inlier_threshold` of the returned, refitted circle). False for fewer than 3
+/// points or when no sample gave a circle within the bounds.
+bool fitCircleRansac(const Points2& pts, const CircleRansacParams& params, std::mt19937& rng,
+                     Circle& out, int* inliers = nullptr);
 
 }  // namespace pedtrack::fit

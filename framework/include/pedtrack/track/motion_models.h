@@ -6,6 +6,8 @@
 //   CA  [x, y, vx, vy, ax, ay]  continuous Wiener-process acceleration (§6.2.3)
 //   CT  [x, y, vx, vy]          coordinated turn with a known rate ω (§11.7.1), CV's noise
 //   Unicycle [x, y, θ, v]       P2 eq. 13, Jacobians eq. 15, P = A P Aᵀ + W Q Wᵀ (eq. 14)
+//   ShapeUnicycle [x, y, θ, v, α, β]  P1 eq. 1–2: the unicycle with the torso semi-axes, every
+//                               state a random walk with additive noise
 #include <Eigen/Core>
 #include <memory>
 #include <string>
@@ -82,6 +84,23 @@ class Unicycle : public MotionModel {
 
  private:
   double q_theta_, q_v_;
+};
+
+/// P1 eq. 2: ẋ = v cos θ, ẏ = v sin θ, θ, v, α and β random walks; the noise is additive,
+/// Q = diag(rates) Δt with `rates` the six variance rates (units²/s) of [x, y, θ, v, α, β].
+class ShapeUnicycle : public MotionModel {
+ public:
+  /// std::invalid_argument unless `rates` has 6 non-negative entries.
+  explicit ShapeUnicycle(Eigen::VectorXd rates);
+  int dim() const override { return 6; }
+  std::string name() const override { return "shape-unicycle"; }
+  Eigen::VectorXd predict(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::MatrixXd jacobian(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::MatrixXd noise(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::Vector2d velocity(const Eigen::VectorXd& x) const override;
+
+ private:
+  Eigen::VectorXd rates_;
 };
 
 }  // namespace pedtrack::track

@@ -1,0 +1,89 @@
+#pragma once
+// Several people tracked by their torso shape (P1 §III–IV): every track is an IMM whose filters
+// share the motion model of P1 eq. 2 and differ in how they observe the point cloud (ellipse,
+// bounding box, centre of gravity, circle; shape_observation.h). Clusters are assigned to tracks
+// by the Hungarian method on the distance to the prediction; tracks are confirmed M-of-N and
+// deleted after a run of misses. `imm_shape` (P1) uses three observation models; `kf_bb` and
+// `kf_circle` (P0's baselines) one each.
+#include <Eigen/Core>
+#include <random>
+#include <vector>
+
+#include "pedtrack/frame.h"
+#include "pedtrack/params.h"
+#include "pedtrack/track/imm.h"
+#include "pedtrack/track/management.h"
+#include "pedtrack/track/shape_observation.h"
+#include "pedtrack/track/tracker_base.h"
+
+namespace pedtrack::track {
+
+struct ShapeTrackerParams {
+  std::vector<ShapeModel> models{ShapeModel::Ellipse, ShapeModel::Box, ShapeModel::Cog};
+  Eigen::MatrixXd transition;  ///< Π (models × models); identity when empty and one model
+  ShapeObservationParams observation;
+  /// Variance rates of [x, y, θ, v, α, β] per second (P1 Table I's Q per 0.1 s frame × 10).
+  Eigen::VectorXd q_rates;
+  double q_person = 0.5, q_min = 0.2;  ///< score to start a track / to feed one
+  double gate = 1.0;                   ///< largest track–cluster distance (m)
+  int confirm_hits = 3, confirm_window = 5, max_misses = 10;
+  double fit_min_height = 0.6, fit_max_height = 2.2;  ///< points the shapes are fitted to (m)
+  double cog_alpha = 0.17, cog_beta = 0.08;           ///< the PC-COG model's fixed size (P1)
+  double init_speed_sigma = 1.0;                      ///< a new track's speed uncertainty (m/s)
+  int birth_points = 10;    ///< torso-band points a cluster needs to start a track (N_b)
+  double flip_speed = 0.2;  ///< walking "backwards" faster than this turns the heading round (m/s)
+  unsigned seed = 1;        ///< RANSAC sampling
+  bool report_tentative = false;
+  ShapeTrackerParams();
+};
+
+class ShapeTracker {
+ public:
+  /// std::invalid_argument for an inconsistent Π.
+  explicit ShapeTracker(ShapeTrackerParams params);
+  /// Predicts, associates the frame's detections (their clusters' points), updates, manages
+  /// and appends the reported tracks to f.tracks.
+  void process(Frame& f);
+
+  /// The parameters every shape tracker plugin declares (association, management, motion noise,
+  /// height band, seed), their reader, and the groups of the ellipse, box and circle models.
+  static std::vector<ParamSpec> commonParams();
+  static std::vector<ParamSpec> ellipseParams();
+  static std::vector<ParamSpec> boxParams();
+  static std::vector<ParamSpec> circleParams();
+  /// Reads the groups the ParamSet declares into `p` (ConfigError naming the key when invalid).
+  static void read(const ParamSet& set, ShapeTrackerParams& p);
+
+ private:
+  struct Candidate {
+    int detection = -1, cluster = -1;
+    double score = 0;
+    ShapeCloud cloud;
+    Eigen::Vector2d position;
+  };
+  struct ShapeTrack {
+    long id = 0;
+    ImmState imm;
+    MOfN life;
+    int misses = 0;
+    double score = 0;
+    int cluster = -1;
+  };
+
+  std::vector<Candidate> candidates(const Frame& f) const;
+  void update(ShapeTrack& t, const Candidate& c);
+  ShapeTrack birth(const Candidate& c);
+  void align(ImmState& s) const;
+  void report(Frame& f);
+
+  ShapeTrackerParams p_;
+  std::shared_ptr<const ShapeUnicycle> motion_;
+  Imm imm_;
+  ScoreHysteresis accept_;
+  FrameClock clock_;
+  TrackIds ids_;
+  std::mt19937 rng_;
+  std::vector<ShapeTrack> tracks_;
+};
+
+}  // namespace pedtrack::track

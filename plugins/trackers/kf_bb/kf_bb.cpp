@@ -1,0 +1,46 @@
+// kf_bb (P0 §VI's KF-BB baseline; P1 Fig. 11's single bounding-box EKF): one filter on the
+// torso state [x, y, θ, v, α, β] of P1 observing the bounding box of each person's points —
+// centre, orientation and half-sides — with the association and track management of imm_shape.
+#include <memory>
+
+#include "pedtrack/plugin.h"
+#include "pedtrack/track/shape_tracker.h"
+
+namespace pedtrack::kfbb {
+namespace {
+
+using namespace pedtrack::track;
+
+class KfBb : public Tracker {
+ public:
+  explicit KfBb(const PluginContext& ctx) : tracker_(makeParams(ctx.params)) {}
+  void process(Frame& f) override { tracker_.process(f); }
+
+ private:
+  static ShapeTrackerParams makeParams(const ParamSet& s) {
+    ShapeTrackerParams p;
+    ShapeTracker::read(s, p);
+    p.models = {ShapeModel::Box};
+    p.transition = Eigen::MatrixXd::Identity(1, 1);
+    return p;
+  }
+  ShapeTracker tracker_;
+};
+
+PluginDescriptor describe() {
+  PluginDescriptor d;
+  d.category = Category::Tracker;
+  d.doc = "P0's KF-BB: one EKF on bounding-box observations [x, y, theta, alpha, beta]";
+  d.params = ShapeTracker::commonParams();
+  const auto box = ShapeTracker::boxParams();
+  d.params.insert(d.params.end(), box.begin(), box.end());
+  d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
+    return std::make_unique<KfBb>(ctx);
+  };
+  return d;
+}
+
+}  // namespace
+}  // namespace pedtrack::kfbb
+
+PEDTRACK_PLUGIN("kf_bb", pedtrack::kfbb::describe)

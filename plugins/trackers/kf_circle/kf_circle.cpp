@@ -1,0 +1,47 @@
+// kf_circle (P0 §VI's KF-circle baseline, after P0 ref. 15): one filter on the torso state
+// [x, y, θ, v, α, β] of P1 observing a RANSAC circle fitted to each person's points — its centre
+// and radius (the mean semi-axis) — with the association and track management of imm_shape.
+// A circle has no orientation: the heading comes from the motion alone.
+#include <memory>
+
+#include "pedtrack/plugin.h"
+#include "pedtrack/track/shape_tracker.h"
+
+namespace pedtrack::kfcircle {
+namespace {
+
+using namespace pedtrack::track;
+
+class KfCircle : public Tracker {
+ public:
+  explicit KfCircle(const PluginContext& ctx) : tracker_(makeParams(ctx.params)) {}
+  void process(Frame& f) override { tracker_.process(f); }
+
+ private:
+  static ShapeTrackerParams makeParams(const ParamSet& s) {
+    ShapeTrackerParams p;
+    ShapeTracker::read(s, p);
+    p.models = {ShapeModel::Circle};
+    p.transition = Eigen::MatrixXd::Identity(1, 1);
+    return p;
+  }
+  ShapeTracker tracker_;
+};
+
+PluginDescriptor describe() {
+  PluginDescriptor d;
+  d.category = Category::Tracker;
+  d.doc = "P0's KF-circle: one EKF on RANSAC circle observations [x, y, radius]";
+  d.params = ShapeTracker::commonParams();
+  const auto circle = ShapeTracker::circleParams();
+  d.params.insert(d.params.end(), circle.begin(), circle.end());
+  d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
+    return std::make_unique<KfCircle>(ctx);
+  };
+  return d;
+}
+
+}  // namespace
+}  // namespace pedtrack::kfcircle
+
+PEDTRACK_PLUGIN("kf_circle", pedtrack::kfcircle::describe)

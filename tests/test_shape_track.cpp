@@ -1,0 +1,219 @@
+// The torso-shape tracking parts: P1's motion model, the observation models with their
+// dimension switching (eq. 18), and the shape tracker's IMM on synthetic torso clouds.
+#include <mrpt/obs/CObservationPointCloud.h>
+
+#include <Eigen/Dense>
+#include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "pedtrack/track/kalman.h"
+#include "pedtrack/track/shape_tracker.h"
+
+using namespace pedtrack;
+using namespace pedtrack::track;
+
+namespace {
+
+// Points of the near side of a torso ellipse (P1 convention: α across the facing direction θ,
+// β along it) seen from the origin, on `rings` heights, with σ noise.
+std::vector<std::array<float, 3>> torso(double cx, double cy, double theta, double alpha,
+                                        double beta, int per_ring, int rings, std::mt19937& rng,
+                                        double sigma = 0.005) {
+  std::normal_distribution<double> n(0, sigma);
+  std::vector<std::array<float, 3>> out;
+  const Eigen::Vector2d u(std::cos(theta), std::sin(theta)), w(-std::sin(theta), std::cos(theta));
+  const Eigen::Vector2d c(cx, cy);
+  std::vector<Eigen::Vector2d> visible;
+  for (int k = 0; k < 720; ++k) {
+    const double phi = k * M_PI / 360;
+    const Eigen::Vector2d p = c + beta * std::cos(phi) * u + alpha * std::sin(phi) * w;
+    const Eigen::Vector2d normal = std::cos(phi) / beta * u + std::sin(phi) / alpha * w;
+    if (normal.dot(-p) > 0) visible.push_back(p);
+  }
+  for (int r = 0; r < rings; ++r)
+    for (int i = 0; i < per_ring; ++i) {
+      const Eigen::Vector2d& p = visible[(visible.size() - 1) * i / std::max(per_ring - 1, 1)];
+      out.push_back({float(p.x() + n(rng)), float(p.y() + n(rng)), float(0.9 + 0.15 * r)});
+    }
+  return out;
+}
+
+// A frame at time t whose cloud is `pts` (robot = fixed frame, sensor at the origin), with one
+// cluster of all the points and one detection of it.
+Frame torsoFrame(double t, const std::vector<std::array<float, 3>>& pts, double score = 0.9) {
+  auto obs = mrpt::obs::CObservationPointCloud::Create();
+  auto map = mrpt::maps::CSimplePointsMap::Create();
+  for (const auto& p : pts) map->insertPointFast(p[0], p[1], p[2]);
+  obs->pointcloud = map;
+  Frame f;
+  f.t = t;
+  f.observations.push_back(obs);
+  Cluster c;
+  for (std::uint32_t i = 0; i < pts.size(); ++i) c.indices.push_back(i);
+  f.clusters.push_back(c);
+  Detection d;
+  d.cluster = 0;
+  d.score = score;
+  d.x = pts.empty() ? 0 : pts[0][0];
+  d.y = pts.empty() ? 0 : pts[0][1];
+  f.detections.push_back(d);
+  return f;
+}
+
+ShapeCloud cloudOf(const std::vector<std::array<float, 3>>& pts) {
+  ShapeCloud c;
+  for (const auto& p : pts) c.points.emplace_back(p[0], p[1]);
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("P1's shape unicycle: prediction, Jacobian against numeric, additive noise",
+          "[shape][motion]") {
+  const Eigen::VectorXd rates = (Eigen::VectorXd(6) << 0, 0, 10, 10, 1e-3, 2e-3).finished();
+  ShapeUnicycle m(rates);
+  Eigen::VectorXd x(6);
+  x << 1, 2, 0.5, 1.2, 0.18, 0.09;
+  const Eigen::VectorXd y = m.predict(x, 0.1);
+  CHECK(y(0) == Approx(1 + 0.12 * std::cos(0.5)));
+  CHECK(y(1) == Approx(2 + 0.12 * std::sin(0.5)));
+  CHECK(y.tail<4>() == x.tail<4>());
+  const Eigen::MatrixXd F = m.jacobian(x, 0.1);
+  for (int k = 0; k < 6; ++k) {
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(6);
+    e(k) = 1e-6;
+    const Eigen::VectorXd col = (m.predict(x + e, 0.1) - m.predict(x - e, 0.1)) / 2e-6;
+    CHECK((col - F.col(k)).norm() < 1e-6);
+  }
+  CHECK(m.noise(x, 0.1).diagonal().isApprox(rates * 0.1));
+  CHECK_THROWS_AS(ShapeUnicycle(Eigen::VectorXd::Ones(4)), std::invalid_argument);
+}
+
+TEST_CASE("observation dimension switches with the point count (P1 eq. 18)", "[shape][obs]") {
+  std::mt19937 gen(3), rng(4);
+  ShapeObservationParams p;  // N_e = 40, N_b = 10
+  const Eigen::VectorXd prior = (Eigen::VectorXd(6) << 5, 0, M_PI, 0, 0.18, 0.09).finished();
+  auto dims = [&](int per_ring, int rings) {
+    const ShapeCloud c = cloudOf(torso(5, 0, M_PI, 0.18, 0.09, per_ring, rings, gen));
+    ShapeFits fits(c, prior, p, rng);
+    std::array<int, 3> d{};
+    int k = 0;
+    for (ShapeModel m : {ShapeModel::Ellipse, ShapeModel::Box, ShapeModel::Cog}) {
+      const auto meas = fits.measure(m);
+      d[k++] = meas ? int(meas->z.size()) : 0;
+    }
+    return d;
+  };
+  CHECK(dims(20, 3) == std::array<int, 3>{5, 5, 2});  // 60 points
+  CHECK(dims(10, 2) == std::array<int, 3>{2, 5, 2});  // 20 points: N_b ≤ M < N_e
+  CHECK(dims(3, 2) == std::array<int, 3>{0, 0, 2});   // 6 points: below N_b, the COG only
+  CHECK(dims(1, 1) == std::array<int, 3>{0, 0, 2});   // 1 point: the COG only
+}
+
+TEST_CASE("shape measurements: heading nearest the prior modulo pi, box axes, COG offset",
+          "[shape][obs]") {
+  std::mt19937 gen(5), rng(6);
+  ShapeObservationParams p;
+  // A person 5 m ahead facing the sensor (θ = π), seen from the front: dense cloud.
+  const ShapeCloud c = cloudOf(torso(5, 0, M_PI, 0.18, 0.09, 20, 3, gen, 0.002));
+  // The prior says θ ≈ 0 (walking away, back seen): the ellipse's θ must come out near 0, not π.
+  const Eigen::VectorXd prior = (Eigen::VectorXd(6) << 5, 0, 0.1, 1, 0.18, 0.09).finished();
+  ShapeFits fits(c, prior, p, rng);
+  const auto e = fits.measure(ShapeModel::Ellipse);
+  REQUIRE(e);
+  CHECK(std::abs(e->z(2)) < 0.2);
+  CHECK(e->z(0) == Approx(5).margin(0.03));
+  CHECK(e->z(3) == Approx(0.18).margin(0.03));  // α: across the shoulders
+  CHECK(e->z(4) == Approx(0.09).margin(0.03));
+  // The box's heading axis is the one nearer the prior; α is its half-side across.
+  const auto b = fits.measure(ShapeModel::Box);
+  REQUIRE(b);
+  CHECK(std::abs(b->z(2)) < 0.2);
+  CHECK(b->z(3) > b->z(4));
+  // The COG moves back from the near surface by the prior's β.
+  const auto g = fits.measure(ShapeModel::Cog);
+  REQUIRE(g);
+  const Eigen::Vector2d mean = fit::centroid(c.points);
+  const Eigen::Vector2d want = mean + 0.09 * mean.normalized();  // the sensor is at the origin
+  CHECK(g->z(0) == Approx(want.x()).margin(1e-9));
+  CHECK(g->z(1) == Approx(want.y()).margin(1e-9));
+}
+
+TEST_CASE("IMM model probabilities move to the PC-COG model when points fall below N_b",
+          "[shape][imm]") {
+  ShapeTrackerParams p;  // P1: ellipse, box, cog with Table I's Q, R, Π
+  p.report_tentative = true;
+  ShapeTracker tracker(p);
+  std::mt19937 gen(7);
+  // A person walking away along +x at 1 m/s from 4 m, facing +x (the back is seen).
+  auto probs = [&](double t, int per_ring, int rings) {
+    Frame f = torsoFrame(t, torso(4 + t, 0.5, 0, 0.18, 0.09, per_ring, rings, gen));
+    tracker.process(f);
+    REQUIRE(f.tracks.size() == 1);
+    return f.tracks[0].model_probs;
+  };
+  std::vector<double> dense, sparse;
+  for (int k = 0; k < 40; ++k) dense = probs(0.1 * k, 20, 3);   // 60 points
+  CHECK(dense[0] > 0.5);                                        // the ellipse leads when dense
+  for (int k = 40; k < 80; ++k) sparse = probs(0.1 * k, 3, 2);  // 6 points: below N_b
+  CHECK(sparse[2] > dense[2]);
+  CHECK(sparse[2] > sparse[0]);
+  CHECK(sparse[2] > sparse[1]);
+}
+
+TEST_CASE("one walker: one confirmed track, position, heading and size recovered",
+          "[shape][tracker]") {
+  ShapeTrackerParams p;
+  ShapeTracker tracker(p);
+  std::mt19937 gen(8);
+  Frame last;
+  for (int k = 0; k < 60; ++k) {
+    const double t = 0.1 * k;
+    // Walking diagonally away (θ = 0.5) at 1 m/s, so the sensor sees the back and a shoulder.
+    last = torsoFrame(
+        t, torso(3 + t * std::cos(0.5), 1 + t * std::sin(0.5), 0.5, 0.18, 0.09, 20, 3, gen));
+    tracker.process(last);
+  }
+  REQUIRE(last.tracks.size() == 1);
+  const Track& tr = last.tracks[0];
+  CHECK(tr.status == "confirmed");
+  CHECK(tr.id == 1);
+  const double t = 5.9;
+  CHECK(tr.x == Approx(3 + t * std::cos(0.5)).margin(0.05));
+  CHECK(tr.y == Approx(1 + t * std::sin(0.5)).margin(0.05));
+  CHECK(std::abs(wrapAngle(tr.yaw - 0.5)) < 0.15);  // facing the walking direction
+  CHECK(std::hypot(tr.vx, tr.vy) == Approx(1).margin(0.15));
+  CHECK(tr.alpha == Approx(0.18).margin(0.04));
+  CHECK(tr.beta == Approx(0.09).margin(0.04));
+  REQUIRE(tr.model_probs.size() == 3);
+}
+
+TEST_CASE("shape tracker: low scores start nothing; a lost track is deleted after max_misses",
+          "[shape][tracker]") {
+  ShapeTrackerParams p;
+  p.max_misses = 3;
+  ShapeTracker tracker(p);
+  std::mt19937 gen(9);
+  for (int k = 0; k < 5; ++k) {
+    Frame f = torsoFrame(0.1 * k, torso(5, 0, M_PI, 0.18, 0.09, 20, 3, gen), 0.3);
+    tracker.process(f);
+    CHECK(f.tracks.empty());  // 0.3 < q_person = 0.5: no track starts
+  }
+  int reported = 0;
+  for (int k = 5; k < 15; ++k) {
+    Frame f = torsoFrame(0.1 * k, torso(5, 0, M_PI, 0.18, 0.09, 20, 3, gen));
+    tracker.process(f);
+    reported = int(f.tracks.size());
+  }
+  CHECK(reported == 1);
+  std::vector<std::size_t> counts;
+  for (int k = 15; k < 21; ++k) {
+    Frame f;  // nothing seen
+    f.t = 0.1 * k;
+    tracker.process(f);
+    counts.push_back(f.tracks.size());
+  }
+  CHECK(counts == std::vector<std::size_t>{1, 1, 0, 0, 0, 0});  // the 3rd miss in a row deletes
+}
