@@ -167,4 +167,18 @@ void ShapeTracker::read(const ParamSet& s, ShapeTrackerParams& p) {
   }
 }
 
+ShapeTrackerParams ShapeTrackerStage::makeParams(const ParamSet& params,
+                                                 std::vector<ShapeModel> models,
+                                                 Eigen::MatrixXd transition) {
+  ShapeTrackerParams p;
+  ShapeTracker::read(params, p);
+  p.models = std::move(models);
+  p.transition = std::move(transition);
+  return p;
+}
+
+ShapeTrackerStage::ShapeTrackerStage(const ParamSet& params, std::vector<ShapeModel> models,
+                                     Eigen::MatrixXd transition)
+    : tracker_(makeParams(params, std::move(models), std::move(transition))) {}
+
 }  // namespace pedtrack::track

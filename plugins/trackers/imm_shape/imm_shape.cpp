@@ -4,6 +4,7 @@
 // with the point count (eq. 18), so a person stays one track from dense to sparse clouds. Q, R
 // and Π default to P1 Table I; the per-track model probabilities go to `model_probs`
 // (ellipse;box;cog).
+#include <cmath>
 #include <memory>
 
 #include "pedtrack/errors.h"
@@ -15,26 +16,17 @@ namespace {
 
 using namespace pedtrack::track;
 
-class ImmShape : public Tracker {
- public:
-  explicit ImmShape(const PluginContext& ctx) : tracker_(makeParams(ctx.params)) {}
-  void process(Frame& f) override { tracker_.process(f); }
-
- private:
-  static ShapeTrackerParams makeParams(const ParamSet& s) {
-    ShapeTrackerParams p;
-    ShapeTracker::read(s, p);
-    p.models = {ShapeModel::Ellipse, ShapeModel::Box, ShapeModel::Cog};
-    const std::vector<double> pi = s.getVector("transition");
-    p.transition = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(pi.data());
-    for (int i = 0; i < 3; ++i)
-      if (std::abs(p.transition.row(i).sum() - 1) > 1e-6)
-        throw ConfigError(s.where("transition") + ": row " + std::to_string(i + 1) +
-                          " does not sum to 1");
-    return p;
-  }
-  ShapeTracker tracker_;
-};
+// Π from the `transition` key, row by row; rows must sum to 1.
+Eigen::MatrixXd transition(const ParamSet& s) {
+  const std::vector<double> pi = s.getVector("transition");
+  const Eigen::MatrixXd t =
+      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(pi.data());
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(t.row(i).sum() - 1) > 1e-6)
+      throw ConfigError(s.where("transition") + ": row " + std::to_string(i + 1) +
+                        " does not sum to 1");
+  return t;
+}
 
 PluginDescriptor describe() {
   PluginDescriptor d;
@@ -48,7 +40,9 @@ PluginDescriptor describe() {
       "", 9, 0, 1,
       "Pi (P1 Table I): model switching probabilities, row by row (ellipse, box, cog)"));
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
-    return std::make_unique<ImmShape>(ctx);
+    return std::make_unique<ShapeTrackerStage>(
+        ctx.params, std::vector<ShapeModel>{ShapeModel::Ellipse, ShapeModel::Box, ShapeModel::Cog},
+        transition(ctx.params));
   };
   return d;
 }

@@ -11,22 +11,6 @@ namespace {
 
 using namespace pedtrack::track;
 
-class KfBb : public Tracker {
- public:
-  explicit KfBb(const PluginContext& ctx) : tracker_(makeParams(ctx.params)) {}
-  void process(Frame& f) override { tracker_.process(f); }
-
- private:
-  static ShapeTrackerParams makeParams(const ParamSet& s) {
-    ShapeTrackerParams p;
-    ShapeTracker::read(s, p);
-    p.models = {ShapeModel::Box};
-    p.transition = Eigen::MatrixXd::Identity(1, 1);
-    return p;
-  }
-  ShapeTracker tracker_;
-};
-
 PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
@@ -35,7 +19,8 @@ PluginDescriptor describe() {
   const auto box = ShapeTracker::boxParams();
   d.params.insert(d.params.end(), box.begin(), box.end());
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
-    return std::make_unique<KfBb>(ctx);
+    return std::make_unique<ShapeTrackerStage>(ctx.params, std::vector<ShapeModel>{ShapeModel::Box},
+                                               Eigen::MatrixXd::Identity(1, 1));
   };
   return d;
 }

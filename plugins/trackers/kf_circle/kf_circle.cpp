@@ -12,22 +12,6 @@ namespace {
 
 using namespace pedtrack::track;
 
-class KfCircle : public Tracker {
- public:
-  explicit KfCircle(const PluginContext& ctx) : tracker_(makeParams(ctx.params)) {}
-  void process(Frame& f) override { tracker_.process(f); }
-
- private:
-  static ShapeTrackerParams makeParams(const ParamSet& s) {
-    ShapeTrackerParams p;
-    ShapeTracker::read(s, p);
-    p.models = {ShapeModel::Circle};
-    p.transition = Eigen::MatrixXd::Identity(1, 1);
-    return p;
-  }
-  ShapeTracker tracker_;
-};
-
 PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
@@ -36,7 +20,8 @@ PluginDescriptor describe() {
   const auto circle = ShapeTracker::circleParams();
   d.params.insert(d.params.end(), circle.begin(), circle.end());
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
-    return std::make_unique<KfCircle>(ctx);
+    return std::make_unique<ShapeTrackerStage>(
+        ctx.params, std::vector<ShapeModel>{ShapeModel::Circle}, Eigen::MatrixXd::Identity(1, 1));
   };
   return d;
 }

@@ -11,6 +11,7 @@
 
 #include "pedtrack/frame.h"
 #include "pedtrack/params.h"
+#include "pedtrack/plugin.h"
 #include "pedtrack/track/imm.h"
 #include "pedtrack/track/management.h"
 #include "pedtrack/track/shape_observation.h"
@@ -84,6 +85,21 @@ class ShapeTracker {
   TrackIds ids_;
   std::mt19937 rng_;
   std::vector<ShapeTrack> tracks_;
+};
+
+/// The tracker stage of a shape-tracker plugin: the common parameters read from `params`, then
+/// `models` with transition matrix `transition` (imm_shape, kf_bb and kf_circle differ only in
+/// these two and in the parameter groups they declare).
+class ShapeTrackerStage : public Tracker {
+ public:
+  ShapeTrackerStage(const ParamSet& params, std::vector<ShapeModel> models,
+                    Eigen::MatrixXd transition);
+  void process(Frame& f) override { tracker_.process(f); }
+
+ private:
+  static ShapeTrackerParams makeParams(const ParamSet& params, std::vector<ShapeModel> models,
+                                       Eigen::MatrixXd transition);
+  ShapeTracker tracker_;
 };
 
 }  // namespace pedtrack::track
