@@ -53,16 +53,6 @@ std::string tracksCsv(double dx) {
   return s;
 }
 
-// A number of the JSON output: the first `"key": <number>`.
-double jsonValue(const std::string& json, const std::string& key) {
-  const std::string k = "\"" + key + "\": ";
-  for (auto p = json.find(k); p != std::string::npos; p = json.find(k, p + 1)) {
-    const char c = json[p + k.size()];
-    if (c == '-' || (c >= '0' && c <= '9')) return std::stod(json.substr(p + k.size()));
-  }
-  throw std::runtime_error("no number for " + key + " in " + json);
-}
-
 }  // namespace
 
 TEST_CASE("eval prints CLEAR MOT, identity, HOTA and NEES as a table and as JSON", "[eval_cli]") {

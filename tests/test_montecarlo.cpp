@@ -58,16 +58,6 @@ std::string config(const std::string& name) {
   return std::string(PEDTRACK_SOURCE_DIR) + "/configs/" + name;
 }
 
-// A number of the JSON output: the first `"key": <number>`.
-double jsonValue(const std::string& json, const std::string& key) {
-  const std::string k = "\"" + key + "\": ";
-  for (auto p = json.find(k); p != std::string::npos; p = json.find(k, p + 1)) {
-    const char c = json[p + k.size()];
-    if (c == '-' || (c >= '0' && c <= '9')) return std::stod(json.substr(p + k.size()));
-  }
-  throw std::runtime_error("no number for " + key + " in " + json);
-}
-
 }  // namespace
 
 TEST_CASE("montecarlo scoring: RMSE per frame, pooled NEES, ID switches per run", "[montecarlo]") {

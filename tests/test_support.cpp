@@ -77,6 +77,15 @@ std::vector<std::string> lines(const std::string& text) {
   return out;
 }
 
+double jsonValue(const std::string& json, const std::string& key) {
+  const std::string k = "\"" + key + "\": ";
+  for (auto p = json.find(k); p != std::string::npos; p = json.find(k, p + 1)) {
+    const char c = json[p + k.size()];
+    if (c == '-' || (c >= '0' && c <= '9')) return std::stod(json.substr(p + k.size()));
+  }
+  throw std::runtime_error("no number for " + key + " in " + json);
+}
+
 double jsonNumber(const std::string& json, const std::string& key) {
   const auto k = json.find("\"" + key + "\":");
   if (k == std::string::npos) throw std::runtime_error("run.json has no key " + key);

@@ -25,6 +25,8 @@ std::string readFile(const std::string& path);
 void writeFile(const std::string& path, const std::string& text);
 std::vector<std::string> lines(const std::string& text);
 /// A number field of run.json (flat, written by writeRunJson).
+/// The first `"key": <number>` of a JSON text, skipping keys whose value is not a number.
+double jsonValue(const std::string& json, const std::string& key);
 double jsonNumber(const std::string& json, const std::string& key);
 
 }  // namespace pedtrack::test
