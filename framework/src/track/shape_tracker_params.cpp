@@ -181,4 +181,7 @@ ShapeTrackerStage::ShapeTrackerStage(const ParamSet& params, std::vector<ShapeMo
                                      Eigen::MatrixXd transition)
     : tracker_(makeParams(params, std::move(models), std::move(transition))) {}
 
+ShapeTrackerStage::ShapeTrackerStage(const ParamSet& params, TorsoEstimatorFactory estimators)
+    : tracker_(makeParams(params, {}, {}), std::move(estimators)) {}
+
 }  // namespace pedtrack::track

@@ -1,10 +1,10 @@
 #pragma once
-// Several people tracked by their torso shape (P1 §III–IV): every track is an IMM whose filters
-// share the motion model of P1 eq. 2 and differ in how they observe the point cloud (ellipse,
-// bounding box, centre of gravity, circle; shape_observation.h). Clusters are assigned to tracks
-// by the Hungarian method on the distance to the prediction; tracks are confirmed M-of-N and
-// deleted after a run of misses. `imm_shape` (P1) uses three observation models; `kf_bb` and
-// `kf_circle` (P0's baselines) one each.
+// Several people tracked by their torso (P1 §III–IV, P0): clusters with points in the torso band
+// are assigned to tracks by the Hungarian method on the distance to the prediction; tracks are
+// confirmed M-of-N and deleted after a run of misses. What a track estimates and how is its
+// TorsoEstimator's: by default an IMM over observation models (shape_imm_estimator.h; `imm_shape`
+// (P1) uses three, `kf_bb` and `kf_circle` (P0's baselines) one each), or P0's moving-horizon
+// estimator (`mhe_mlesac`).
 #include <Eigen/Core>
 #include <random>
 #include <vector>
@@ -12,9 +12,9 @@
 #include "pedtrack/frame.h"
 #include "pedtrack/params.h"
 #include "pedtrack/plugin.h"
-#include "pedtrack/track/imm.h"
 #include "pedtrack/track/management.h"
 #include "pedtrack/track/shape_observation.h"
+#include "pedtrack/track/torso_estimator.h"
 #include "pedtrack/track/tracker_base.h"
 
 namespace pedtrack::track {
@@ -40,8 +40,10 @@ struct ShapeTrackerParams {
 
 class ShapeTracker {
  public:
-  /// std::invalid_argument for an inconsistent Π.
+  /// The IMM over `params.models` (std::invalid_argument for an inconsistent Π).
   explicit ShapeTracker(ShapeTrackerParams params);
+  /// Tracks estimated by the estimators `estimators` makes (models and Π unused).
+  ShapeTracker(ShapeTrackerParams params, TorsoEstimatorFactory estimators);
   /// Predicts, associates the frame's detections (their clusters' points), updates, manages
   /// and appends the reported tracks to f.tracks.
   void process(Frame& f);
@@ -64,7 +66,7 @@ class ShapeTracker {
   };
   struct ShapeTrack {
     long id = 0;
-    ImmState imm;
+    std::unique_ptr<TorsoEstimator> estimate;
     MOfN life;
     int misses = 0;
     double score = 0;
@@ -72,14 +74,11 @@ class ShapeTracker {
   };
 
   std::vector<Candidate> candidates(const Frame& f) const;
-  void update(ShapeTrack& t, const Candidate& c);
   ShapeTrack birth(const Candidate& c);
-  void align(ImmState& s) const;
   void report(Frame& f);
 
   ShapeTrackerParams p_;
-  std::shared_ptr<const ShapeUnicycle> motion_;
-  Imm imm_;
+  TorsoEstimatorFactory estimators_;
   ScoreHysteresis accept_;
   FrameClock clock_;
   TrackIds ids_;
@@ -94,6 +93,8 @@ class ShapeTrackerStage : public Tracker {
  public:
   ShapeTrackerStage(const ParamSet& params, std::vector<ShapeModel> models,
                     Eigen::MatrixXd transition);
+  /// A stage whose tracks are estimated by `estimators` (the common parameters still apply).
+  ShapeTrackerStage(const ParamSet& params, TorsoEstimatorFactory estimators);
   void process(Frame& f) override { tracker_.process(f); }
 
  private:
