@@ -6,7 +6,7 @@ packages=(
   libmrpt-dev mrpt-apps mrpt-common            # MRPT 2.5: observations, config, drivers, rawlog-edit, sample datasets
   libboost-filesystem-dev libboost-program-options-dev
   catch2
-  coinor-libipopt-dev                          # Ipopt: the reference solver of the circle-fit test
+  coinor-libipopt-dev                          # Ipopt: mhe_mlesac (P0) and the circle-fit test
   libopencv-dev                                # pedtrack render: drawing, PNG, MP4 (FFmpeg backend); SVM
   libnanoflann-dev                             # k-NN KD-tree (also pulled in by libmrpt-dev)
   librosbag-storage-dev libmrpt-ros1bridge-dev  # ROS1 bag replay

@@ -227,9 +227,17 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
     std::fprintf(
         f,
         "%s\n    {\"name\": \"%s\", \"plugin\": \"%s\", \"calls\": %zu, \"mean_ms\": %.6f, "
-        "\"p50_ms\": %.6f, \"p99_ms\": %.6f, \"max_ms\": %.6f}",
+        "\"p50_ms\": %.6f, \"p99_ms\": %.6f, \"max_ms\": %.6f",
         i ? "," : "", jsonEscape(st.name()).c_str(), jsonEscape(st.plugin()).c_str(), st.calls(),
         st.mean(), st.percentile(50), st.percentile(99), st.max());
+    if (!st.counters.empty()) {
+      std::fprintf(f, ", \"counters\": {");
+      for (std::size_t c = 0; c < st.counters.size(); ++c)
+        std::fprintf(f, "%s\"%s\": %ld", c ? ", " : "", jsonEscape(st.counters[c].first).c_str(),
+                     st.counters[c].second);
+      std::fprintf(f, "}");
+    }
+    std::fprintf(f, "}");
   }
   std::fprintf(f, "\n  ]\n}\n");
   std::fclose(f);

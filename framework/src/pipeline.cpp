@@ -153,6 +153,9 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   try {  // a plugin that cannot complete its side outputs fails the run, after the rest is out
     for (auto& s : stages_) s->finish();
     source_->finish();
+    sum.stages[0].counters = source_->counters();
+    for (std::size_t i = 0; i < stages_.size(); ++i)
+      sum.stages[i + 1].counters = stages_[i]->counters();
   } catch (const std::exception& e) {
     sum.status = "error";
     sum.error = e.what();

@@ -30,6 +30,9 @@ class Plugin {
   virtual void start(const std::string& out_dir) { (void)out_dir; }
   /// Called once after the last frame, before outputs are closed.
   virtual void finish() {}
+  /// Named counts of what the plugin did or survived (solver failures and fallbacks, …), written
+  /// under the stage in run.json after the run.
+  virtual std::vector<std::pair<std::string, long>> counters() const { return {}; }
 };
 
 /// A source of frames: a device, a log replay, a simulator.

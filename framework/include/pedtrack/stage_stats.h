@@ -2,6 +2,7 @@
 // Per-stage wall-time statistics for run.json.
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pedtrack {
@@ -17,6 +18,8 @@ class StageStats {
   double max() const;
   const std::string& name() const { return name_; }
   const std::string& plugin() const { return plugin_; }
+  /// The plugin's counters (Plugin::counters) at the end of the run.
+  std::vector<std::pair<std::string, long>> counters;
 
  private:
   std::string name_, plugin_;

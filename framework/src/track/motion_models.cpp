@@ -154,4 +154,27 @@ Eigen::Vector2d ShapeUnicycle::velocity(const Eigen::VectorXd& x) const {
   return {x(3) * std::cos(x(2)), x(3) * std::sin(x(2))};
 }
 
+EllipseRandomWalk::EllipseRandomWalk(Eigen::VectorXd q) : q_(std::move(q)) {
+  if (q_.size() != 5 || !(q_.array() > 0).all())
+    throw std::invalid_argument("the ellipse random walk needs 5 positive noise variances");
+}
+
+Eigen::VectorXd EllipseRandomWalk::predict(const Eigen::VectorXd& x, double dt) const {
+  Eigen::VectorXd y = x;
+  y.head<3>() += dt * x.segment<3>(3);
+  return y;
+}
+
+Eigen::MatrixXd EllipseRandomWalk::jacobian(const Eigen::VectorXd&, double dt) const {
+  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(8, 8);
+  A.block<3, 3>(0, 3).diagonal().setConstant(dt);
+  return A;
+}
+
+Eigen::MatrixXd EllipseRandomWalk::noise(const Eigen::VectorXd&, double dt) const {
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(8, 8);
+  Q.block<5, 5>(3, 3) = (q_ * dt * dt).asDiagonal();
+  return Q;
+}
+
 }  // namespace pedtrack::track

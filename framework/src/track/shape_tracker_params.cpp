@@ -117,7 +117,7 @@ void ShapeTracker::read(const ParamSet& s, ShapeTrackerParams& p) {
     throw ConfigError(s.where("confirm_hits") + ": must not exceed confirm_window (" +
                       std::to_string(p.confirm_window) + ")");
   p.max_misses = int(s.getInt("max_misses"));
-  p.q_rates = vec(s.getVector("q"));
+  if (s.has("q")) p.q_rates = vec(s.getVector("q"));  // mhe_mlesac has P0's noise instead
   p.fit_min_height = s.getDouble("fit_min_height");
   p.fit_max_height = s.getDouble("fit_max_height");
   if (p.fit_min_height >= p.fit_max_height)

@@ -8,6 +8,8 @@
 //   Unicycle [x, y, θ, v]       P2 eq. 13, Jacobians eq. 15, P = A P Aᵀ + W Q Wᵀ (eq. 14)
 //   ShapeUnicycle [x, y, θ, v, α, β]  P1 eq. 1–2: the unicycle with the torso semi-axes, every
 //                               state a random walk with additive noise
+//   EllipseRandomWalk [x, y, θ, vx, vy, ω, α, β]  P0 eq. 1–2: constant velocity and turn rate,
+//                               the velocities and semi-axes random walks driven through G
 #include <Eigen/Core>
 #include <memory>
 #include <string>
@@ -101,6 +103,25 @@ class ShapeUnicycle : public MotionModel {
 
  private:
   Eigen::VectorXd rates_;
+};
+
+/// P0 eq. 2 by Euler: x_k = A x_{k−1} + G n_k with A moving x, y, θ by vx Δt, vy Δt, ω Δt, and
+/// G = [0; Δt I₅] putting n = [n_x, n_y, n_ω, n_α, n_β] ~ N(0, diag(q)) (accelerations, and the
+/// semi-axes' rates) on vx, vy, ω, α, β: the noise is G diag(q) Gᵀ.
+class EllipseRandomWalk : public MotionModel {
+ public:
+  /// std::invalid_argument unless `q` has 5 positive entries.
+  explicit EllipseRandomWalk(Eigen::VectorXd q);
+  int dim() const override { return 8; }
+  std::string name() const override { return "ellipse-random-walk"; }
+  Eigen::VectorXd predict(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::MatrixXd jacobian(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::MatrixXd noise(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::Vector2d velocity(const Eigen::VectorXd& x) const override { return x.segment<2>(3); }
+  const Eigen::VectorXd& q() const { return q_; }
+
+ private:
+  Eigen::VectorXd q_;
 };
 
 }  // namespace pedtrack::track
