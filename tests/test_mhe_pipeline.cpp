@@ -1,8 +1,6 @@
 // configs/people_3d_mhe.ini end to end: P0's MHE-MLESAC (mhe_mlesac) on P0's C-path, scored by
 // `pedtrack eval`, and its run.json counters.
 #include <catch2/catch.hpp>
-#include <fstream>
-#include <sstream>
 
 #include "test_support.h"
 
@@ -12,13 +10,6 @@ using namespace pedtrack::test;
 namespace {
 
 const std::string kConfigs = std::string(PEDTRACK_SOURCE_DIR) + "/configs/";
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -30,7 +21,7 @@ TEST_CASE("people_3d_mhe.ini tracks P0's C-path walker with MHE-MLESAC", "[mhe][
                           "-q", "--no-point-labels"});
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const std::string run = slurp(dir + "/run.json");
+  const std::string run = readFile(dir + "/run.json");
   // Every frame from the 10th on is an MHE window (the first H are the KF's); Ipopt succeeded.
   CHECK(jsonValue(run, "mhe_windows") >= 25);
   CHECK(jsonValue(run, "mhe_candidates") >= 25 * 90);

@@ -24,4 +24,8 @@ LinearMeasurement positionMeasurement(int state_dim, double sigma) {
   return m;
 }
 
+double nearestModPi(double theta, double reference) {
+  return reference + wrapAngle(2 * (theta - reference)) / 2;
+}
+
 }  // namespace pedtrack::track

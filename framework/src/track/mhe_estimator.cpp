@@ -12,11 +12,6 @@ namespace {
 
 using mhe::State;
 
-// a + kπ nearest to `ref` (an ellipse's axis is defined modulo π).
-double nearestModPi(double a, double ref) {
-  return ref + std::remainder(a - ref, M_PI);
-}
-
 struct MheContext {
   MheEstimatorParams p;
   EllipseRandomWalk motion;

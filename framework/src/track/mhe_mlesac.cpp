@@ -61,7 +61,6 @@ void refit(const MheProblem& winner, const MheParams& params, const MlesacOption
   ++out.solved;
   if (!r.usable()) {
     ++out.failed;
-    out.last_failure = r.status;
     return;
   }
   out.xs = r.xs;
@@ -119,7 +118,6 @@ MlesacResult mheMlesac(const MlesacInput& in, const MheParams& params, const Mle
     ++out.solved;
     if (!r.usable()) {
       ++out.failed;
-      out.last_failure = r.status;
       continue;
     }
     const Selected s = selectionCost(problems[j], params, options.selection, r.xs);

@@ -305,7 +305,6 @@ MheSolver::MheSolver(const MheParams& params, const SolverOptions& options)
   o.SetStringValue("sb", "yes");
   o.SetIntegerValue("max_iter", options.max_iterations);
   o.SetNumericValue("tol", options.tolerance);
-  if (options.max_cpu_ms > 0) o.SetNumericValue("max_cpu_time", options.max_cpu_ms / 1000);
   o.SetStringValue("hessian_approximation", "exact");
   // Warm start: every candidate starts from the a priori window, already near the answer, so
   // the barrier starts small and the start is barely pushed off the bounds.

@@ -8,11 +8,6 @@ namespace {
 
 constexpr double kNoHeading = std::numeric_limits<double>::quiet_NaN();
 
-// θ + kπ nearest `reference` (the heading a shape cannot tell from its reverse).
-double nearestModPi(double theta, double reference) {
-  return reference + wrapAngle(2 * (theta - reference)) / 2;
-}
-
 }  // namespace
 
 const char* toString(ShapeModel m) {

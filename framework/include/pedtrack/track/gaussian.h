@@ -29,4 +29,7 @@ LinearMeasurement positionMeasurement(int state_dim, double sigma);
 /// Wraps an angle to (-π, π].
 double wrapAngle(double a);
 
+/// θ + kπ nearest `reference`: an axis (an ellipse's, a box's) is defined modulo π.
+double nearestModPi(double theta, double reference);
+
 }  // namespace pedtrack::track

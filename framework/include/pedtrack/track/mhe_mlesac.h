@@ -40,7 +40,6 @@ struct MlesacResult {
   int candidates = 0;     ///< candidates generated (distinct samples)
   int solved = 0;         ///< Ipopt solves (the refit included)
   int failed = 0;         ///< of which failed (infeasible, iteration limit, error)
-  SolveResult::Status last_failure = SolveResult::Solved;
 };
 
 MlesacResult mheMlesac(const MlesacInput& in, const MheParams& params, const MlesacOptions& options,

@@ -13,7 +13,6 @@ namespace pedtrack::track::mhe {
 struct SolverOptions {
   int max_iterations = 30;  ///< Ipopt's max_iter
   double tolerance = 1e-6;  ///< Ipopt's tol (relative)
-  double max_cpu_ms = 0;    ///< Ipopt's max_cpu_time per solve (0: none)
   int print_level = 0;      ///< Ipopt's log on stdout (0: silent; 5: per iteration)
 };
 
