@@ -91,6 +91,8 @@ std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s) {
               e.heading_pairs);
   o += format("  heading RMSE        %s rad = %s deg\n", fixed(e.headingRmse()).c_str(),
               fixed(e.headingRmse() * 180 / M_PI, 2).c_str());
+  o += format("  axis RMSE (mod 180) %s rad = %s deg\n", fixed(e.axisRmse()).c_str(),
+              fixed(e.axisRmse() * 180 / M_PI, 2).c_str());
   o += format("  semi-axis MAE       major %s m, minor %s m   (%zu pairs with shape)\n",
               fixed(e.majorMae()).c_str(), fixed(e.minorMae()).c_str(), e.shape_pairs);
   o += format("  speed MAE           %s m/s, velocity RMSE %s m/s   (%zu pairs)\n",
@@ -146,6 +148,8 @@ std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s,
       .num("heading_mae_deg", e.headingMae() * 180 / M_PI)
       .num("heading_rmse_rad", e.headingRmse())
       .num("heading_rmse_deg", e.headingRmse() * 180 / M_PI)
+      .num("axis_rmse_rad", e.axisRmse())
+      .num("axis_rmse_deg", e.axisRmse() * 180 / M_PI)
       .count("shape_pairs", e.shape_pairs)
       .num("major_axis_mae_m", e.majorMae())
       .num("minor_axis_mae_m", e.minorMae())

@@ -116,6 +116,7 @@ CompareEntry readMonteCarloDir(const std::string& dir, const std::string& label)
   e.runs = tree.get<std::size_t>("runs_scored", 0);
   e.position_rmse_m = number(tree, "tracking.errors.position_rmse_m");
   e.heading_rmse_rad = number(tree, "tracking.errors.heading_rmse_rad");
+  e.axis_rmse_rad = number(tree, "tracking.errors.axis_rmse_rad");  // absent in older results
   e.mota = number(tree, "tracking.clear_mot.mota");
   if (const auto s = tree.get_optional<std::size_t>("tracking.clear_mot.id_switches"))
     e.id_switches = *s;
@@ -125,12 +126,13 @@ CompareEntry readMonteCarloDir(const std::string& dir, const std::string& label)
 }
 
 std::string compareMarkdown(const std::vector<CompareEntry>& entries) {
-  std::vector<std::vector<std::string>> rows = {
-      {"label", "position RMSE (mm)", "heading RMSE (rad)", "MOTA", "ID switches", "runs"}};
+  std::vector<std::vector<std::string>> rows = {{"label", "position RMSE (mm)",
+                                                 "heading RMSE (rad)", "axis RMSE (rad)", "MOTA",
+                                                 "ID switches", "runs"}};
   for (const auto& e : entries)
     rows.push_back({e.label, cell(1000 * e.position_rmse_m, 1), cell(e.heading_rmse_rad, 4),
-                    cell(e.mota, 4), e.id_switches ? std::to_string(*e.id_switches) : "-",
-                    std::to_string(e.runs)});
+                    cell(e.axis_rmse_rad, 4), cell(e.mota, 4),
+                    e.id_switches ? std::to_string(*e.id_switches) : "-", std::to_string(e.runs)});
   std::vector<std::size_t> width(rows[0].size(), 3);
   for (const auto& r : rows)
     for (std::size_t c = 0; c < r.size(); ++c) width[c] = std::max(width[c], r[c].size());

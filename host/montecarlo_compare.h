@@ -23,6 +23,7 @@ struct CompareEntry {
   std::string label, dir;
   std::size_t runs = 0;  ///< runs scored
   double position_rmse_m = std::nan(""), heading_rmse_rad = std::nan(""), mota = std::nan("");
+  double axis_rmse_rad = std::nan("");     ///< heading error modulo π; NaN in results without it
   std::optional<std::size_t> id_switches;  ///< over all runs; absent without tracks
   double t0 = std::nan("");                ///< first frame of run 0 (UNIX s), NaN when unknown
   std::map<long, CompareCurve> curves;     ///< by truth id
@@ -34,7 +35,8 @@ struct CompareEntry {
 CompareEntry readMonteCarloDir(const std::string& dir, const std::string& label);
 
 /// The markdown table: one row per entry, columns label, position RMSE (mm), heading RMSE (rad),
-/// MOTA, ID switches, runs ("-" where undefined); the cells padded so that columns align.
+/// axis RMSE (rad), MOTA, ID switches, runs ("-" where undefined); the cells padded so that
+/// columns align.
 std::string compareMarkdown(const std::vector<CompareEntry>& entries);
 
 /// Draws errors_<truth id>.png into `dir` for every truth id of some entry: distance error (m)

@@ -420,20 +420,55 @@ TEST_CASE("heading RMSE: a constant offset, the wrap-around at pi, rows without 
   CHECK(constant.heading_pairs == 3);
   CHECK(constant.headingRmse() == Approx(0.1));
   CHECK(constant.headingMae() == Approx(0.1));
+  CHECK(constant.axisRmse() == Approx(0.1));  // under π/2: the axis error is the heading error
   // yaw 3.1 against −3.1: 0.0832 rad apart across ±π, not 6.2.
   const PairErrors wrap = pairErrors(headingPairs(rows, {{-3.1, 3.1}}));
   CHECK(wrap.headingRmse() == Approx(2 * M_PI - 6.2).epsilon(1e-9));
   CHECK(wrap.headingRmse() == Approx(0.083).margin(5e-4));
+  CHECK(wrap.axisRmse() == Approx(2 * M_PI - 6.2).epsilon(1e-9));
   // Errors 0.3 and 0.4: RMSE √((0.09 + 0.16) / 2), MAE 0.35; a track row without yaw is skipped.
   const PairErrors mixed = pairErrors(headingPairs(rows, {{0, 0.3}, {0, -0.4}, {0, NAN}}));
   CHECK(mixed.pairs == 3);
   CHECK(mixed.heading_pairs == 2);
   CHECK(mixed.headingRmse() == Approx(std::sqrt(0.125)));
   CHECK(mixed.headingMae() == Approx(0.35));
+  CHECK(mixed.axisRmse() == Approx(std::sqrt(0.125)));
   PairErrors sum = constant;
   sum += wrap;
   CHECK(sum.headingRmse() == Approx(std::sqrt((3 * 0.01 + std::pow(2 * M_PI - 6.2, 2)) / 4)));
-  CHECK(std::isnan(pairErrors(headingPairs(rows, {{0, NAN}})).headingRmse()));
+  CHECK(sum.axisRmse() == Approx(std::sqrt((3 * 0.01 + std::pow(2 * M_PI - 6.2, 2)) / 4)));
+  const PairErrors none = pairErrors(headingPairs(rows, {{0, NAN}}));
+  CHECK(std::isnan(none.headingRmse()));
+  CHECK(std::isnan(none.axisRmse()));
+}
+
+TEST_CASE("axis RMSE: the heading error modulo pi, front and back alike (P0 Table I)",
+          "[eval][heading]") {
+  std::vector<ObjectRow> rows;
+  // The track faces backwards: heading error π, the axis is right.
+  const PairErrors flip = pairErrors(headingPairs(rows, {{0.5, 0.5 + M_PI}}));
+  CHECK(flip.heading_pairs == 1);
+  CHECK(flip.headingRmse() == Approx(M_PI));
+  CHECK(flip.axisRmse() == Approx(0).margin(1e-12));
+  // d = π/2 + 0.1: e = d − π·round(d/π) = d − π = −(π/2 − 0.1).
+  const PairErrors quarter = pairErrors(headingPairs(rows, {{0.2, 0.2 + M_PI / 2 + 0.1}}));
+  CHECK(quarter.headingRmse() == Approx(M_PI / 2 + 0.1));
+  CHECK(quarter.axisRmse() == Approx(M_PI / 2 - 0.1));
+  // Across ±π: yaw −2 against 2, d = wrap(−4) = 2π − 4, e = d − π = π − 4.
+  const PairErrors across = pairErrors(headingPairs(rows, {{2, -2}}));
+  CHECK(across.headingRmse() == Approx(2 * M_PI - 4));
+  CHECK(across.axisRmse() == Approx(4 - M_PI));
+  // Pooled, over the same pairs as the heading RMSE; a row without yaw is skipped.
+  const PairErrors both =
+      pairErrors(headingPairs(rows, {{0.5, 0.5 + M_PI}, {0.2, 0.2 + M_PI / 2 + 0.1}, {0, NAN}}));
+  CHECK(both.heading_pairs == 2);
+  CHECK(both.headingRmse() == Approx(std::sqrt((M_PI * M_PI + std::pow(M_PI / 2 + 0.1, 2)) / 2)));
+  CHECK(both.axisRmse() == Approx(std::sqrt(std::pow(M_PI / 2 - 0.1, 2) / 2)));
+  PairErrors sum = flip;
+  sum += quarter;
+  sum += across;
+  CHECK(sum.axisRmse() ==
+        Approx(std::sqrt((std::pow(M_PI / 2 - 0.1, 2) + std::pow(4 - M_PI, 2)) / 3)));
 }
 
 TEST_CASE("range bands: errors, semi-axes and model probabilities per distance from the sensor",

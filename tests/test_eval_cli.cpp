@@ -405,9 +405,16 @@ TEST_CASE("eval --range-bins: errors, semi-axes and model probabilities per dist
   // The pooled heading RMSE of every match: 0.1, 0.3, 2 × wrap, 4 × 0 over 8 pairs.
   CHECK(jsonValue(json, "heading_rmse_rad") ==
         Approx(std::sqrt((0.01 + 0.09 + 2 * wrap * wrap) / 8)).epsilon(1e-4));
+  // Every heading error is under π/2: the axis RMSE (modulo π) is the same.
+  CHECK(jsonValue(json, "axis_rmse_rad") ==
+        Approx(std::sqrt((0.01 + 0.09 + 2 * wrap * wrap) / 8)).epsilon(1e-4));
+  CHECK(jsonValue(json, "axis_rmse_deg") ==
+        Approx(std::sqrt((0.01 + 0.09 + 2 * wrap * wrap) / 8) * 180 / M_PI).epsilon(1e-4));
 
   const std::string text = run({"--range-bins", "0,10,20,30", "--model-names", "ellipse,box,cog"});
   CHECK_THAT(text, Catch::Contains("heading RMSE        0.1193 rad"));
+  CHECK_THAT(text, Catch::Contains("\n  heading RMSE        0.1193 rad = 6.83 deg\n"
+                                   "  axis RMSE (mod 180) 0.1193 rad = 6.83 deg\n"));
   CHECK_THAT(text, Catch::Contains("7 of 8 matches in a band"));
   CHECK_THAT(text, Catch::Matches("(.|\n)*range \\(m\\) .* ellipse +box +cog\n(.|\n)*"));
   CHECK_THAT(text, Catch::Contains("  0 - 10             2     0.2236   0.2236 rad    0.250   "

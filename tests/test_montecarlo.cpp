@@ -184,15 +184,17 @@ namespace {
 
 // A montecarlo output directory written by hand: montecarlo.json with the compared figures and
 // consistency.csv with truth 1 over frames 0-2 and 4 (frame 3 unmatched), `d` m and `h` rad off.
+// An empty `axis` leaves "axis_rmse_rad" out, as in results written before it existed.
 void handMadeResult(const std::string& dir, double rmse, const std::string& heading, double mota,
-                    int switches, double d, const std::string& h) {
+                    int switches, double d, const std::string& h, const std::string& axis = "") {
   fs::create_directories(dir);
+  const std::string axis_key = axis.empty() ? "" : ", \"axis_rmse_rad\": " + axis;
   writeFile(dir + "/montecarlo.json",
             mrpt::format("{\n  \"mode\": \"montecarlo\",\n  \"runs\": 4,\n  \"runs_scored\": 3,\n"
                          "  \"tracking\": {\n  \"clear_mot\": {\"id_switches\": %d, \"mota\": "
                          "%g},\n  \"errors\": {\"position_rmse_m\": %g, \"heading_rmse_rad\": "
-                         "%s}\n},\n  \"run_list\": [{\"mota\": 0.1}],\n  \"t0\": 100.000000\n}\n",
-                         switches, mota, rmse, heading.c_str()));
+                         "%s%s}\n},\n  \"run_list\": [{\"mota\": 0.1}],\n  \"t0\": 100.000000\n}\n",
+                         switches, mota, rmse, heading.c_str(), axis_key.c_str()));
   std::string csv =
       "truth_id,frame,t,n,nees_mean,nees_lower,nees_upper,nees_inside,nis_mean,nis_lower,"
       "nis_upper,nis_inside,rmse_x,rmse_y,rmse,heading_n,heading_rmse\n";
@@ -207,13 +209,14 @@ void handMadeResult(const std::string& dir, double rmse, const std::string& head
 TEST_CASE("montecarlo --compare: a table and error curves of several result directories",
           "[montecarlo][compare]") {
   const std::string dir = freshDir("montecarlo_compare");
-  handMadeResult(dir + "/kf", 0.0523, "0.21", 0.9, 2, 0.05, "0.2");
-  handMadeResult(dir + "/imm", 0.031, "null", 0.95, 0, 0.03, "");
+  handMadeResult(dir + "/kf", 0.0523, "0.21", 0.9, 2, 0.05, "0.2", "0.12");
+  handMadeResult(dir + "/imm", 0.031, "null", 0.95, 0, 0.03, "");  // no axis_rmse_rad: older
 
   const cli::CompareEntry kf = cli::readMonteCarloDir(dir + "/kf", "kf_bb");
   CHECK(kf.runs == 3);
   CHECK(kf.position_rmse_m == Approx(0.0523));
   CHECK(kf.heading_rmse_rad == Approx(0.21));
+  CHECK(kf.axis_rmse_rad == Approx(0.12));
   CHECK(kf.mota == Approx(0.9));  // the pooled MOTA, not a run's
   REQUIRE(kf.id_switches);
   CHECK(*kf.id_switches == 2);
@@ -223,14 +226,19 @@ TEST_CASE("montecarlo --compare: a table and error curves of several result dire
   CHECK(kf.curves.at(1).rmse[3] == Approx(0.25));
   const cli::CompareEntry imm = cli::readMonteCarloDir(dir + "/imm", "imm_shape");
   CHECK(std::isnan(imm.heading_rmse_rad));
+  CHECK(std::isnan(imm.axis_rmse_rad));  // the key is absent
   CHECK(std::isnan(imm.curves.at(1).heading[0]));
 
   const std::string md = cli::compareMarkdown({kf, imm});
   CHECK(md ==
-        "| label     | position RMSE (mm) | heading RMSE (rad) |   MOTA | ID switches | runs |\n"
-        "| :-------- | -----------------: | -----------------: | -----: | ----------: | ---: |\n"
-        "| kf_bb     |               52.3 |             0.2100 | 0.9000 |           2 |    3 |\n"
-        "| imm_shape |               31.0 |                  - | 0.9500 |           0 |    3 |\n");
+        "| label     | position RMSE (mm) | heading RMSE (rad) | axis RMSE (rad) |"
+        "   MOTA | ID switches | runs |\n"
+        "| :-------- | -----------------: | -----------------: | --------------: |"
+        " -----: | ----------: | ---: |\n"
+        "| kf_bb     |               52.3 |             0.2100 |          0.1200 |"
+        " 0.9000 |           2 |    3 |\n"
+        "| imm_shape |               31.0 |                  - |               - |"
+        " 0.9500 |           0 |    3 |\n");
   const std::string plots = freshDir("montecarlo_compare_plots");
   CHECK(cli::drawCompareErrors(plots, {kf, imm}) == std::vector<std::string>{"errors_1.png"});
   const cv::Mat img = cv::imread(plots + "/errors_1.png");
@@ -420,8 +428,14 @@ TEST_CASE("montecarlo with a tracker: consistency.csv, plots and ID switches", "
   const double heading = jsonValue(json, "heading_rmse_rad");
   CHECK(heading > 0);
   CHECK(heading < 1);
+  // The pooled axis RMSE (heading error modulo π) is at tracking.errors.axis_rmse_rad.
+  CHECK_THAT(json, Catch::Contains("\"axis_rmse_rad\": "));
+  const double axis = jsonValue(json, "axis_rmse_rad");
+  CHECK(axis >= 0);
+  CHECK(axis <= heading + 1e-12);  // |d − π·round(d/π)| ≤ |d|
   CHECK(jsonValue(json, "heading_frames") > 5);
   CHECK_THAT(r.output, Catch::Contains("heading RMSE"));
+  CHECK_THAT(r.output, Catch::Contains("axis RMSE (mod 180)"));
 
   SECTION("--compare puts this result next to itself") {
     const std::string cmp = dir + "/cmp";
@@ -435,6 +449,8 @@ TEST_CASE("montecarlo with a tracker: consistency.csv, plots and ID switches", "
     CHECK_THAT(rows[3], Catch::StartsWith("| second "));
     CHECK(rows[2].substr(10) == rows[3].substr(10));
     CHECK_THAT(rows[2], Catch::Contains(mrpt::format(" %.4f |", heading)));
+    CHECK_THAT(rows[0], Catch::Contains("| heading RMSE (rad) | axis RMSE (rad) |"));
+    CHECK_THAT(rows[2], Catch::Contains(mrpt::format(" %.4f |", axis)));
     CHECK_THAT(c.output, Catch::Contains(readFile(cmp + "/compare.md")));
     CHECK(cv::imread(cmp + "/errors_1.png").rows == 800);
   }

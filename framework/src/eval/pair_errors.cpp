@@ -52,6 +52,9 @@ double PairErrors::velocityRmse() const {
 double PairErrors::headingRmse() const {
   return std::sqrt(ratio(heading_sq_sum, heading_pairs));
 }
+double PairErrors::axisRmse() const {
+  return std::sqrt(ratio(axis_sq_sum, heading_pairs));
+}
 
 PairErrors& PairErrors::operator+=(const PairErrors& o) {
   pairs += o.pairs;
@@ -68,6 +71,7 @@ PairErrors& PairErrors::operator+=(const PairErrors& o) {
   speed_sum += o.speed_sum;
   velocity_sq_sum += o.velocity_sq_sum;
   heading_sq_sum += o.heading_sq_sum;
+  axis_sq_sum += o.axis_sq_sum;
   return *this;
 }
 
@@ -88,6 +92,8 @@ PairErrors pairErrors(const std::vector<MatchedPair>& pairs) {
       const double d = wrapAngle(r->yaw - t->yaw);
       e.heading_sum += std::fabs(d);
       e.heading_sq_sum += d * d;
+      const double a = d - M_PI * std::round(d / M_PI);  // modulo π: [−π/2, π/2]
+      e.axis_sq_sum += a * a;
     }
     if (r->hasShape() && t->hasShape()) {
       ++e.shape_pairs;

@@ -2,6 +2,8 @@
 // State errors over the CLEAR MOT matches: position, heading, torso shape, speed.
 //  - position: RMSE, MAE (= MOTP) and per-axis RMSE, in the compared frame;
 //  - heading: |wrap(yaw − yaw_true)| in [0, π], when both rows have yaw (velocity is not used);
+//    the axis error is that difference modulo π, in [−π/2, π/2] (front/back ignored: P0 Table I's
+//    "Abs. angular error" of ellipse / bounding-box orientations);
 //  - shape: an ellipse (α, β, yaw) is the same as (β, α, yaw + 90°), so the larger semi-axis is
 //    compared with the larger one and the smaller with the smaller, when both rows have α, β;
 //  - speed: | |v| − |v_true| | and the velocity-vector RMSE, when both rows have vx, vy.
@@ -23,6 +25,7 @@ struct PairErrors {
   std::size_t speed_pairs = 0;
   double speed_sum = 0, velocity_sq_sum = 0;
   double heading_sq_sum = 0;  ///< rad², of the heading pairs
+  double axis_sq_sum = 0;     ///< rad², of the heading pairs' errors modulo π
 
   double rmse() const;
   double mae() const;
@@ -34,6 +37,9 @@ struct PairErrors {
   double speedMae() const;    ///< m/s
   double velocityRmse() const;
   double headingRmse() const;  ///< rad, √ of the mean squared wrapped heading error
+  /// rad, √ of the mean squared axis error d − π·round(d / π), d = wrap(yaw − yaw_true); NaN
+  /// without heading pairs.
+  double axisRmse() const;
   PairErrors& operator+=(const PairErrors& o);
 };
 
