@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <thread>
+#include <vector>
 
 #include "mhe_walk.h"
 #include "pedtrack/track/mhe_ellipse.h"
@@ -181,4 +183,27 @@ TEST_CASE("MHE-MLESAC with its refit beats MHE on every point when there are out
                                           << err_all / 5 << " m");
   CHECK(err_mlesac < 0.5 * err_all);
   CHECK(err_mlesac / 5 < 0.04);
+}
+
+TEST_CASE("solvers on two threads at once give each thread's own answer") {
+  // MUMPS (sequential) keeps global state: unserialised, two solves at once crash the process
+  // (montecarlo -j 2 did). Each thread solves the same walk and must get the single-thread answer.
+  MheParams params;
+  MheWalk walk(params.horizon, 0.1, {2.0, -0.4, 0.3, 0.2, 0.88, 0.2, 0.18, 0.09});
+  const MheProblem pb = walk.problem(params, /*perturb=*/true);
+  MheSolver reference_solver(params);
+  const SolveResult reference = reference_solver.solve(pb, pb.prior);
+  REQUIRE(reference.usable());
+  std::vector<SolveResult> results(2);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 2; ++t)
+    threads.emplace_back([&, t] {
+      MheSolver solver(params);
+      for (int i = 0; i < 20; ++i) results[std::size_t(t)] = solver.solve(pb, pb.prior);
+    });
+  for (std::thread& th : threads) th.join();
+  for (const SolveResult& r : results) {
+    REQUIRE(r.usable());
+    CHECK((r.xs.back() - reference.xs.back()).norm() < 1e-9);
+  }
 }

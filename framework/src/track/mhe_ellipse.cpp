@@ -86,9 +86,15 @@ Selected selectionCost(const MheProblem& pb, const MheParams& params, Selection 
   Selected out;
   double sum = 0;
   const double d2 = params.d_th * params.d_th;
-  for (int k = 0; k < pb.size(); ++k)
+  for (int k = 0; k < pb.size(); ++k) {
+    // deviation() per point, its trigonometry hoisted (every horizon point of every candidate).
+    const State& x = xs[k];
+    const double c = std::cos(x(2)), sn = std::sin(x(2));
+    const double a = 1 / (x(6) * x(6)), b = 1 / (x(7) * x(7));
     for (const Point& p : (*pb.frames)[k].points) {
-      const double s2 = std::pow(deviation(xs[k], p), 2);
+      const double dx = p.x() - x(0), dy = p.y() - x(1);
+      const double u = dx * c + dy * sn, w = -dx * sn + dy * c;
+      const double s2 = std::pow(a * u * u + b * w * w - 1, 2);
       ++out.points;
       if (s2 < d2) {
         ++out.inliers;
@@ -97,6 +103,7 @@ Selected selectionCost(const MheProblem& pb, const MheParams& params, Selection 
         sum += d2;
       }
     }
+  }
   const int n = selection == Selection::Truncated ? out.points : out.inliers;
   // No inlier at all: the candidate explains nothing; it loses to any that explains something.
   const double data = n > 0 ? sum / n / params.r : std::numeric_limits<double>::infinity();

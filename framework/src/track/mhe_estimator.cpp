@@ -12,6 +12,8 @@ namespace {
 
 using mhe::State;
 
+constexpr double kAnyMotion = 0.02;  // m/s: slower is no direction at all
+
 struct MheContext {
   MheEstimatorParams p;
   EllipseRandomWalk motion;
@@ -48,7 +50,8 @@ class MheEstimator : public TorsoEstimator {
   State estimate_ = State::Zero();         // this frame's estimate
   State predicted_ = State::Zero();        // the estimate moved to the coming frame
   double dt_ = 0.1;
-  double facing_ = 0;  // the facing direction last reported
+  double facing_ = 0;          // the facing direction last reported
+  bool facing_known_ = false;  // the person has walked: facing_ is no longer the initial guess
 };
 
 MheEstimator::MheEstimator(std::shared_ptr<MheContext> ctx, const ShapeCloud& cloud,
@@ -160,7 +163,7 @@ void MheEstimator::update(const ShapeCloud& cloud, std::mt19937& rng) {
   kalmanMeasure(cloud, rng);
   kf_posts_.push_back(kf_.x);
   push({dt_, cloud.origin, cloud.points});
-  if (int(frames_.size()) < ctx_->p.mhe.horizon) {
+  if (int(frames_.size()) < ctx_->p.mhe.horizon || ctx_->p.kf_only) {
     estimate_ = kf_.x;  // T < H: the KF (Algorithm 1's preamble)
     return;
   }
@@ -193,7 +196,12 @@ Track MheEstimator::row() {
     for (std::size_t k = 1; k < frames_.size(); ++k) span += frames_[k].dt;
     walk = (window_.back().head<2>() - window_.front().head<2>()) / span;
   }
-  const double ref = walk.norm() > ctx_->p.flip_speed ? std::atan2(walk.y(), walk.x()) : facing_;
+  // Until the person has walked faster than flip_speed the facing side is a guess (toward the
+  // sensor); any motion, however slow, is better evidence than that guess, so it decides.
+  const double speed = walk.norm();
+  const bool follow = speed > ctx_->p.flip_speed || (!facing_known_ && speed > kAnyMotion);
+  facing_known_ = facing_known_ || speed > ctx_->p.flip_speed;
+  const double ref = follow ? std::atan2(walk.y(), walk.x()) : facing_;
   facing_ = wrapAngle(nearestModPi(estimate_(2) - M_PI / 2, ref));
   r.yaw = facing_;
   r.alpha = estimate_(6);

@@ -43,18 +43,27 @@ std::vector<std::vector<int>> drawSample(const std::vector<int>& offsets, int to
   return sample;
 }
 
-// The winner's inliers (|s| < d_th over the whole horizon) as the sample of one more solve.
+// The winner's inliers (|s| < d_th over the whole horizon) as the sample of one more solve: all
+// of them, or `refit_points` of them drawn at random (the solve's cost grows with its sample,
+// its answer barely once the sample is several times |Ψ|).
 void refit(const MheProblem& winner, const MheParams& params, const MlesacOptions& options,
-           MheSolver& solver, MlesacResult& out) {
+           MheSolver& solver, MlesacResult& out, std::mt19937& rng) {
   MheProblem pb = winner;
-  int count = 0;
+  std::vector<std::pair<int, int>> inliers;  // (frame, point)
   for (int k = 0; k < pb.size(); ++k) {
     pb.sample[k].clear();
     const auto& pts = (*pb.frames)[k].points;
     for (int i = 0; i < int(pts.size()); ++i)
-      if (std::abs(deviation(out.xs[k], pts[i])) < params.d_th) pb.sample[k].push_back(i);
-    count += int(pb.sample[k].size());
+      if (std::abs(deviation(out.xs[k], pts[i])) < params.d_th) inliers.emplace_back(k, i);
   }
+  const int count = std::min(int(inliers.size()), options.refit_points);
+  for (int i = 0; i < count; ++i) {  // partial Fisher–Yates (a no-op when all are kept)
+    std::uniform_int_distribution<int> u(i, int(inliers.size()) - 1);
+    std::swap(inliers[std::size_t(i)], inliers[std::size_t(u(rng))]);
+  }
+  inliers.resize(std::size_t(count));
+  std::sort(inliers.begin(), inliers.end());
+  for (const auto& [k, i] : inliers) pb.sample[std::size_t(k)].push_back(i);
   if (count < 3) return;
   pb.data_weight = 1 / (params.r * count);
   const SolveResult r = solver.solve(pb, out.xs);
@@ -102,24 +111,40 @@ MlesacResult mheMlesac(const MlesacInput& in, const MheParams& params, const Mle
   if (screen) {
     const MheScreen screener(base, params);
     std::vector<double> score(problems.size());
+    auto rank = [&](std::size_t keep) {
+      std::stable_sort(order.begin(), order.end(),
+                       [&](std::size_t a, std::size_t b) { return score[a] < score[b]; });
+      order.resize(std::min(order.size(), keep));
+    };
+    // Half the steps for every candidate, the rest for the survivors only.
+    const int first = std::max(1, options.screen_iterations / 2);
     for (std::size_t j = 0; j < problems.size(); ++j) {
-      starts[j] = screener.minimise(problems[j], options.screen_iterations);
+      starts[j] = screener.minimise(problems[j], first);
       score[j] = selectionCost(problems[j], params, options.selection, starts[j]).cost;
     }
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return score[a] < score[b]; });
-    order.resize(std::size_t(options.finalists));
+    rank(std::size_t(std::max(options.survivors, options.finalists)));
+    if (options.screen_iterations > first)
+      for (std::size_t j : order) {
+        starts[j] = screener.minimise(problems[j], options.screen_iterations - first, &starts[j]);
+        score[j] = selectionCost(problems[j], params, options.selection, starts[j]).cost;
+      }
+    rank(order.size());  // the survivors by their final screen score
   }
 
-  // Lines 5–15 for the finalists: Ipopt's solution, the lowest selection cost wins.
+  // Lines 5–15 for the finalists: Ipopt's solution, the lowest selection cost wins. A candidate
+  // Ipopt fails on is replaced by the next-ranked one, so `finalists` solutions compete.
+  const int wanted = screen ? options.finalists : int(order.size());
+  int usable = 0;
   std::size_t winner = 0;
   for (std::size_t j : order) {
+    if (usable == wanted) break;
     const SolveResult r = solver.solve(problems[j], starts[j]);
     ++out.solved;
     if (!r.usable()) {
       ++out.failed;
       continue;
     }
+    ++usable;
     const Selected s = selectionCost(problems[j], params, options.selection, r.xs);
     if (!out.ok || s.cost < out.score.cost) {
       out.ok = true;
@@ -129,7 +154,7 @@ MlesacResult mheMlesac(const MlesacInput& in, const MheParams& params, const Mle
     }
   }
   if (out.ok && options.refit && options.sampling)
-    refit(problems[winner], params, options, solver, out);
+    refit(problems[winner], params, options, solver, out, rng);
   return out;
 }
 

@@ -43,9 +43,13 @@ MheScreen::MheScreen(const MheProblem& pb, const MheParams& params)
   }
 }
 
+// x_k depends on x_{T−H+1} and n_{T−H+2..k} only: the first kStates + 5k columns of z.
 std::vector<State> MheScreen::states(const Eigen::VectorXd& z) const {
   std::vector<State> xs(h_);
-  for (int k = 0; k < h_; ++k) xs[k] = map_[k] * z;
+  for (int k = 0; k < h_; ++k) {
+    const int c = kStates + 5 * k;
+    xs[k] = map_[k].leftCols(c) * z.head(c);
+  }
   return xs;
 }
 
@@ -74,8 +78,9 @@ double MheScreen::cost(const MheProblem& pb, const Eigen::VectorXd& z) const {
   return J;
 }
 
-std::vector<State> MheScreen::minimise(const MheProblem& pb, int iterations) const {
-  Eigen::VectorXd z = z0_;
+std::vector<State> MheScreen::minimise(const MheProblem& pb, int iterations,
+                                       const std::vector<State>* start) const {
+  Eigen::VectorXd z = start ? reduce(*start) : z0_;
   double J = cost(pb, z);
   double lambda = 1e-3;
   Eigen::Matrix<double, 5, 1> g5;
@@ -106,17 +111,24 @@ std::vector<State> MheScreen::minimise(const MheProblem& pb, int iterations) con
         A(2 + j, 2 + j) += 2 * kPenalty;
         b(2 + j) += 2 * kPenalty * e;
       }
-      const auto& M = shape_map_[k];
+      const int c = kStates + 5 * k;  // the columns x_k depends on
+      const auto M = shape_map_[k].leftCols(c);
       const Eigen::Matrix<double, 5, Eigen::Dynamic> AM = A * M;
-      H.noalias() += M.transpose() * AM;
-      grad.noalias() += M.transpose() * b;
+      H.topLeftCorner(c, c).noalias() += M.transpose() * AM;
+      grad.head(c).noalias() += M.transpose() * b;
     }
     // Levenberg–Marquardt: damp until the step lowers the cost (a few tries at most).
     bool moved = false;
     for (int tries = 0; tries < 6 && !moved; ++tries) {
       Eigen::MatrixXd D = H;
       D.diagonal() *= 1 + lambda;
-      const Eigen::VectorXd step = D.ldlt().solve(-grad);
+      // D is positive definite (eq. 5's quadratic terms, damped): Cholesky without pivoting.
+      const Eigen::LLT<Eigen::MatrixXd> llt(D);
+      if (llt.info() != Eigen::Success) {
+        lambda *= 10;
+        continue;
+      }
+      const Eigen::VectorXd step = llt.solve(-grad);
       const Eigen::VectorXd trial = z + step;
       const double Jt = cost(pb, trial);
       if (std::isfinite(Jt) && Jt < J) {

@@ -5,6 +5,7 @@
 #include <IpTNLP.hpp>
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 namespace pedtrack::track::mhe {
 namespace {
@@ -289,6 +290,14 @@ const char* toString(SolveResult::Status s) {
   return "failed";
 }
 
+// Debian's MUMPS is the sequential build, whose Fortran modules keep global state (dmumps_load):
+// two Ipopt solves at once in one process (montecarlo -j, two pipelines) corrupt each other and
+// crash. Every Ipopt call of the process is serialised on this lock.
+std::mutex& ipoptLock() {
+  static std::mutex m;
+  return m;
+}
+
 struct MheSolver::Impl {
   MheParams params;
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app;
@@ -298,6 +307,7 @@ struct MheSolver::Impl {
 MheSolver::MheSolver(const MheParams& params, const SolverOptions& options)
     : impl_(std::make_unique<Impl>()) {
   impl_->params = params;
+  const std::lock_guard<std::mutex> lock(ipoptLock());
   // Quiet: no banner, no iteration log (an application without a console journal).
   impl_->app = new Ipopt::IpoptApplication(options.print_level > 0);
   Ipopt::OptionsList& o = *impl_->app->Options();
@@ -315,7 +325,10 @@ MheSolver::MheSolver(const MheParams& params, const SolverOptions& options)
   impl_->app->Initialize();
 }
 
-MheSolver::~MheSolver() = default;
+MheSolver::~MheSolver() {
+  const std::lock_guard<std::mutex> lock(ipoptLock());  // MUMPS's clean-up touches it too
+  impl_.reset();
+}
 
 SolveResult MheSolver::solve(const MheProblem& problem, const std::vector<State>& start) {
   return solveBatch({&problem}, start).front();
@@ -328,6 +341,7 @@ std::vector<SolveResult> MheSolver::solveBatch(const std::vector<const MheProble
   const bool again = IsValid(nlp) && nlp->frames() == h && nlp->batch() == b;
   if (!again) nlp = new MheTnlp(impl_->params, h, b);
   nlp->set(problems, start);
+  const std::lock_guard<std::mutex> lock(ipoptLock());
   try {
     const Ipopt::SmartPtr<Ipopt::TNLP> tnlp(GetRawPtr(nlp));
     again ? impl_->app->ReOptimizeTNLP(tnlp) : impl_->app->OptimizeTNLP(tnlp);

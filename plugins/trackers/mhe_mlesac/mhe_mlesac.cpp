@@ -16,6 +16,20 @@ namespace {
 
 using namespace pedtrack::track;
 
+// Eq. 3's s is negative inside the ellipse, so a point of the head, the neck or the hips (which
+// project inside the torso's outline) pulls the fit inwards as hard as a stray point outside
+// pulls it out: the data term must see the torso only. An adult's torso spans the hips (0.53 of
+// the stature) to the shoulders (0.82; Drillis & Contini's proportions): 1.0–1.3 m above the
+// ground is torso for every stature from 1.6 to 1.9 m (P0 dropped only the legs, below 0.6 m).
+ParamSpec torsoBand(const std::string& name) {
+  if (name == "fit_min_height")
+    return ParamSpec::real("fit_min_height", 1.0, "m", -10, 10,
+                           "lowest point height the torso is fitted to (hips of a 1.9 m adult)");
+  return ParamSpec::real(
+      "fit_max_height", 1.3, "m", -10, 10,
+      "highest point height the torso is fitted to (shoulders of a 1.6 m adult)");
+}
+
 std::vector<ParamSpec> mheParams() {
   return {
       ParamSpec::integer("horizon", 10, "frames", 2, 100, "H: the moving horizon (P0)"),
@@ -37,13 +51,20 @@ std::vector<ParamSpec> mheParams() {
       ParamSpec::boolean(
           "mlesac", true,
           "sample candidates (false: one MHE on every point, P0's MHE without MLESAC)"),
-      ParamSpec::integer("finalists", 3, "", 0, 100000,
+      ParamSpec::boolean("ransac_only", false,
+                         "report the KF alongside on each frame's RANSAC ellipse and never run the "
+                         "MHE (P0's RANSAC comparison)"),
+      ParamSpec::integer("finalists", 1, "", 0, 100000,
                          "candidates Ipopt solves after the fast screen ranks them (0: every one, "
                          "P0's offline procedure)"),
-      ParamSpec::integer("screen_iterations", 6, "", 1, 1000,
+      ParamSpec::integer("screen_iterations", 2, "", 1, 1000,
                          "Levenberg-Marquardt steps of the screen per candidate"),
+      ParamSpec::integer("survivors", 10, "", 1, 100000,
+                         "candidates the screen keeps after half its steps (pruning)"),
       ParamSpec::boolean("refit", true,
                          "solve the winner again on all its inliers (MLESAC's last step)"),
+      ParamSpec::integer("refit_points", 400, "points", 3, 10000000,
+                         "the refit's sample: at most this many of the winner's inliers"),
       ParamSpec::integer("ipopt_max_iter", 30, "", 1, 10000, "Ipopt iterations per solve at most"),
       ParamSpec::real("ipopt_tol", 1e-6, "", 1e-12, 1, "Ipopt's convergence tolerance (tol)"),
       ParamSpec::integer("ipopt_print_level", 0, "", 0, 12, "Ipopt's log on stdout (0: silent)"),
@@ -74,9 +95,12 @@ MheEstimatorParams readMhe(const ParamSet& s) {
   p.mlesac.selection = s.getString("selection") == "truncated" ? mhe::Selection::Truncated
                                                                : mhe::Selection::InlierMean;
   p.mlesac.sampling = s.getBool("mlesac");
+  p.kf_only = s.getBool("ransac_only");
   p.mlesac.finalists = int(s.getInt("finalists"));
   p.mlesac.screen_iterations = int(s.getInt("screen_iterations"));
+  p.mlesac.survivors = int(s.getInt("survivors"));
   p.mlesac.refit = s.getBool("refit");
+  p.mlesac.refit_points = int(s.getInt("refit_points"));
   p.solver.max_iterations = int(s.getInt("ipopt_max_iter"));
   p.solver.tolerance = s.getDouble("ipopt_tol");
   p.solver.print_level = int(s.getInt("ipopt_print_level"));
@@ -114,8 +138,13 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "P0: MHE-MLESAC torso ellipse [x,y,theta,vx,vy,omega,alpha,beta] solved with Ipopt";
-  for (const ParamSpec& spec : ShapeTracker::commonParams())
-    if (spec.name != "q") d.params.push_back(spec);  // the IMM's noise; P0's is system_noise
+  for (const ParamSpec& spec : ShapeTracker::commonParams()) {
+    if (spec.name == "q") continue;  // the IMM's noise; P0's is system_noise
+    if (spec.name == "fit_min_height" || spec.name == "fit_max_height")
+      d.params.push_back(torsoBand(spec.name));
+    else
+      d.params.push_back(spec);
+  }
   for (auto group : {ShapeTracker::ellipseParams(), mheParams()})
     d.params.insert(d.params.end(), group.begin(), group.end());
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {

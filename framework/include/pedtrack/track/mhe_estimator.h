@@ -23,6 +23,9 @@ struct MheEstimatorParams {
   double flip_speed = 0.2;        ///< faster than this, the facing side follows the velocity (m/s)
   double init_speed_sigma = 1.0;  ///< a new track's velocity uncertainty (m/s)
   double init_size_sigma = 0.05;  ///< a new track's semi-axis uncertainty (m)
+  /// P0's "RANSAC only" comparison: report the KF alongside (P0's model observed by the RANSAC
+  /// ellipse of each frame) and never run the MHE.
+  bool kf_only = false;
 };
 
 /// What the estimators of one tracker did, for run.json.

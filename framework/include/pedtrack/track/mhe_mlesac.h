@@ -18,11 +18,15 @@ namespace pedtrack::track::mhe {
 struct MlesacOptions {
   Selection selection = Selection::InlierMean;
   bool sampling = true;       ///< false: one candidate with every point (MHE without MLESAC)
-  int finalists = 3;          ///< candidates Ipopt solves (0: all of them)
-  int screen_iterations = 6;  ///< LM steps of the screen per candidate
+  int finalists = 1;          ///< candidates Ipopt solves (0: all of them)
+  int screen_iterations = 2;  ///< LM steps of the screen per candidate
+  /// Pruning: after half the screen's steps (at least one) only this many best-ranked candidates
+  /// go on; the rest cannot win.
+  int survivors = 10;
   /// MLESAC's last step (Torr & Zisserman 2000, P0 ref. 20): the winner solved again with its
   /// inliers Υ as the sample, so the estimate uses every point that agrees with it.
   bool refit = true;
+  int refit_points = 400;  ///< the refit's sample: at most this many of the inliers, at random
 };
 
 /// One horizon and what the estimator knows before it.

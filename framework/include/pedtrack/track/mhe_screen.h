@@ -21,8 +21,10 @@ class MheScreen {
   /// The parts every candidate of one window shares: the linear map z → states, the motion and
   /// arrival terms (`pb` gives frames, prior and arrival; its sample is not used).
   MheScreen(const MheProblem& pb, const MheParams& params);
-  /// `iterations` LM steps on the candidate problem `pb` from the a priori window.
-  std::vector<State> minimise(const MheProblem& pb, int iterations) const;
+  /// `iterations` LM steps on the candidate problem `pb` from `start` (the a priori window when
+  /// null).
+  std::vector<State> minimise(const MheProblem& pb, int iterations,
+                              const std::vector<State>* start = nullptr) const;
   /// The states of z and z of a window (the noises G†(x_k − A x_{k−1}); the kinematic rows of
   /// the window are dropped).
   std::vector<State> states(const Eigen::VectorXd& z) const;
