@@ -5,11 +5,22 @@
 
 namespace pedtrack::track::mhe {
 
+Deviation::Deviation(const State& x)
+    : x_(x(0)),
+      y_(x(1)),
+      c_(std::cos(x(2))),
+      s_(std::sin(x(2))),
+      a_(1 / (x(6) * x(6))),
+      b_(1 / (x(7) * x(7))) {}
+
+double Deviation::operator()(const Point& p) const {
+  const double dx = p.x() - x_, dy = p.y() - y_;
+  const double u = dx * c_ + dy * s_, w = -dx * s_ + dy * c_;
+  return a_ * u * u + b_ * w * w - 1;
+}
+
 double deviation(const State& x, const Point& p) {
-  const double dx = p.x() - x(0), dy = p.y() - x(1);
-  const double c = std::cos(x(2)), s = std::sin(x(2));
-  const double u = dx * c + dy * s, w = -dx * s + dy * c;
-  return u * u / (x(6) * x(6)) + w * w / (x(7) * x(7)) - 1;
+  return Deviation(x)(p);
 }
 
 // Variables q = (x, y, θ, α, β). With a = α⁻², b = β⁻²: s = a u² + b w² − 1, where
@@ -87,14 +98,9 @@ Selected selectionCost(const MheProblem& pb, const MheParams& params, Selection 
   double sum = 0;
   const double d2 = params.d_th * params.d_th;
   for (int k = 0; k < pb.size(); ++k) {
-    // deviation() per point, its trigonometry hoisted (every horizon point of every candidate).
-    const State& x = xs[k];
-    const double c = std::cos(x(2)), sn = std::sin(x(2));
-    const double a = 1 / (x(6) * x(6)), b = 1 / (x(7) * x(7));
+    const Deviation s(xs[k]);  // every horizon point of every candidate: a hot path
     for (const Point& p : (*pb.frames)[k].points) {
-      const double dx = p.x() - x(0), dy = p.y() - x(1);
-      const double u = dx * c + dy * sn, w = -dx * sn + dy * c;
-      const double s2 = std::pow(a * u * u + b * w * w - 1, 2);
+      const double s2 = std::pow(s(p), 2);
       ++out.points;
       if (s2 < d2) {
         ++out.inliers;

@@ -53,8 +53,9 @@ void refit(const MheProblem& winner, const MheParams& params, const MlesacOption
   for (int k = 0; k < pb.size(); ++k) {
     pb.sample[k].clear();
     const auto& pts = (*pb.frames)[k].points;
+    const Deviation s(out.xs[k]);
     for (int i = 0; i < int(pts.size()); ++i)
-      if (std::abs(deviation(out.xs[k], pts[i])) < params.d_th) inliers.emplace_back(k, i);
+      if (std::abs(s(pts[i])) < params.d_th) inliers.emplace_back(k, i);
   }
   const int count = std::min(int(inliers.size()), options.refit_points);
   for (int i = 0; i < count; ++i) {  // partial Fisher–Yates (a no-op when all are kept)

@@ -56,6 +56,15 @@ struct MheProblem {
 
 /// Eq. 3: s = (u/α)² + (w/β)² − 1, u and w the point's offset along and across θ.
 double deviation(const State& x, const Point& p);
+/// Eq. 3 for many points against one state: the trigonometry done once.
+class Deviation {
+ public:
+  explicit Deviation(const State& x);
+  double operator()(const Point& p) const;
+
+ private:
+  double x_, y_, c_, s_, a_, b_;
+};
 /// s and its gradient with respect to (x, y, θ, α, β), and with `hess` its Hessian.
 double deviation(const State& x, const Point& p, Eigen::Matrix<double, 5, 1>& grad,
                  Eigen::Matrix<double, 5, 5>* hess);
