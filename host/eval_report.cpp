@@ -86,6 +86,8 @@ std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s) {
   o += format("  position RMSE       %s m   (x %s, y %s)\n", fixed(e.rmse()).c_str(),
               fixed(e.rmseX()).c_str(), fixed(e.rmseY()).c_str());
   o += format("  position MAE        %s m\n", fixed(e.mae()).c_str());
+  o += format("  body-axis MAE       sagittal %s m, frontal %s m   (%zu pairs with truth yaw)\n",
+              fixed(e.sagittalMae()).c_str(), fixed(e.frontalMae()).c_str(), e.body_pairs);
   o += format("  heading MAE         %s rad = %s deg   (%zu pairs with yaw)\n",
               fixed(e.headingMae()).c_str(), fixed(e.headingMae() * 180 / M_PI, 2).c_str(),
               e.heading_pairs);
@@ -143,6 +145,9 @@ std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s,
       .num("position_mae_m", e.mae())
       .num("position_rmse_x_m", e.rmseX())
       .num("position_rmse_y_m", e.rmseY())
+      .count("body_axis_pairs", e.body_pairs)
+      .num("sagittal_mae_m", e.sagittalMae())
+      .num("frontal_mae_m", e.frontalMae())
       .count("heading_pairs", e.heading_pairs)
       .num("heading_mae_rad", e.headingMae())
       .num("heading_mae_deg", e.headingMae() * 180 / M_PI)

@@ -471,6 +471,60 @@ TEST_CASE("axis RMSE: the heading error modulo pi, front and back alike (P0 Tabl
         Approx(std::sqrt((std::pow(M_PI / 2 - 0.1, 2) + std::pow(4 - M_PI, 2)) / 3)));
 }
 
+TEST_CASE("body-axis MAE: the position error along and across the truth heading (P3 Table 1)",
+          "[eval][heading]") {
+  // One pair per entry: the truth at the origin facing `yaw`, the estimate offset by (dx, dy) in
+  // the fixed frame. Sagittal = |(dx, dy)·(cos yaw, sin yaw)|, frontal = |(dx, dy)·(−sin, cos)|.
+  struct Case {
+    double yaw, dx, dy;
+  };
+  auto errors = [](std::vector<ObjectRow>& rows, const std::vector<Case>& cases) {
+    rows.assign(2 * cases.size(), ObjectRow());
+    std::vector<MatchedPair> pairs;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      rows[2 * k].yaw = cases[k].yaw;  // truth at (0, 0); the track row has no yaw
+      rows[2 * k + 1].x = cases[k].dx;
+      rows[2 * k + 1].y = cases[k].dy;
+      MatchedPair p;
+      p.frame = k;
+      p.truth = obj(1, 0, 0);
+      p.estimate = obj(7, cases[k].dx, cases[k].dy);
+      p.truth.row = &rows[2 * k];
+      p.estimate.row = &rows[2 * k + 1];
+      pairs.push_back(p);
+    }
+    return pairErrors(pairs);
+  };
+  std::vector<ObjectRow> rows;
+  // Facing +y (90°): the 0.2 m along y is straight ahead, the 0.1 m along x to the side. The
+  // track row has no yaw: the pair still counts (only the truth's heading is needed).
+  const PairErrors up = errors(rows, {{M_PI / 2, 0.1, 0.2}});
+  CHECK(up.body_pairs == 1);
+  CHECK(up.heading_pairs == 0);
+  CHECK(up.sagittalMae() == Approx(0.2));
+  CHECK(up.frontalMae() == Approx(0.1));
+  // Facing 45°: (0.3, 0.3) is 0.3·√2 ahead and nothing across; (0.3, −0.3) the other way round.
+  // Facing 180°, (−0.5, 0): 0.5 ahead (the sign of the component does not matter).
+  const PairErrors mixed =
+      errors(rows, {{M_PI / 4, 0.3, 0.3}, {M_PI / 4, 0.3, -0.3}, {M_PI, -0.5, 0}});
+  CHECK(mixed.body_pairs == 3);
+  CHECK(mixed.sagittalMae() == Approx((0.3 * std::sqrt(2.0) + 0 + 0.5) / 3));
+  CHECK(mixed.frontalMae() == Approx(0.3 * std::sqrt(2.0) / 3));
+  // A truth without yaw is left out of the body-axis errors, not of the position errors.
+  const PairErrors none = errors(rows, {{NAN, 0.1, 0.2}});
+  CHECK(none.pairs == 1);
+  CHECK(none.body_pairs == 0);
+  CHECK(std::isnan(none.sagittalMae()));
+  CHECK(std::isnan(none.frontalMae()));
+  // Pooling adds the sums over the 1 + 3 + 0 body pairs.
+  PairErrors sum = up;
+  sum += mixed;
+  sum += none;
+  CHECK(sum.body_pairs == 4);
+  CHECK(sum.sagittalMae() == Approx((0.2 + 0.3 * std::sqrt(2.0) + 0.5) / 4));
+  CHECK(sum.frontalMae() == Approx((0.1 + 0.3 * std::sqrt(2.0)) / 4));
+}
+
 TEST_CASE("range bands: errors, semi-axes and model probabilities per distance from the sensor",
           "[eval][range]") {
   // Tracks at ranges 5, 8 (band 0-10), 15 (10-20), 35 and 50 (30-inf), one without a sensor

@@ -55,6 +55,12 @@ double PairErrors::headingRmse() const {
 double PairErrors::axisRmse() const {
   return std::sqrt(ratio(axis_sq_sum, heading_pairs));
 }
+double PairErrors::sagittalMae() const {
+  return ratio(sagittal_sum, body_pairs);
+}
+double PairErrors::frontalMae() const {
+  return ratio(frontal_sum, body_pairs);
+}
 
 PairErrors& PairErrors::operator+=(const PairErrors& o) {
   pairs += o.pairs;
@@ -72,6 +78,9 @@ PairErrors& PairErrors::operator+=(const PairErrors& o) {
   velocity_sq_sum += o.velocity_sq_sum;
   heading_sq_sum += o.heading_sq_sum;
   axis_sq_sum += o.axis_sq_sum;
+  body_pairs += o.body_pairs;
+  sagittal_sum += o.sagittal_sum;
+  frontal_sum += o.frontal_sum;
   return *this;
 }
 
@@ -87,6 +96,15 @@ PairErrors pairErrors(const std::vector<MatchedPair>& pairs) {
     const ObjectRow* r = p.estimate.row;
     const ObjectRow* t = p.truth.row;
     if (!r || !t) continue;
+    if (std::isfinite(t->yaw)) {
+      // The rows' fixed-frame positions, not the compared ones: yaw is a fixed-frame angle, and
+      // with --frame sensor the compared error is rotated by the (unknown here) sensor heading.
+      const double ex = r->x - t->x, ey = r->y - t->y;
+      const double c = std::cos(t->yaw), s = std::sin(t->yaw);
+      ++e.body_pairs;
+      e.sagittal_sum += std::fabs(c * ex + s * ey);
+      e.frontal_sum += std::fabs(-s * ex + c * ey);
+    }
     if (std::isfinite(r->yaw) && std::isfinite(t->yaw)) {
       ++e.heading_pairs;
       const double d = wrapAngle(r->yaw - t->yaw);

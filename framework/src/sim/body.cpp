@@ -52,8 +52,9 @@ BodyPose poseBody(const BodySpec& b, const MotionSample& s, const GaitClock& gai
   const double lat = 0.25 * b.step_length * amp * (1 + swing) * std::abs(mv);
   const double lat_sign = mv >= 0 ? 1 : -1;
   for (int side : {+1, -1}) {  // +1 left, -1 right
-    // Sidestepping: the leading leg (towards the motion) opens, the other closes.
-    const double dv = side * half_w + (side == lat_sign ? lat : -0.3 * lat);
+    // Sidestepping: the leading leg (towards the motion) opens, the trailing one follows it
+    // part of the way; both move in the direction of the motion, so the legs never cross.
+    const double dv = side * half_w + lat_sign * (side == lat_sign ? lat : 0.3 * lat);
     const Eigen::Vector3d hip = world(0, side * half_w * 0.9, z_hip);
     const Eigen::Vector3d foot = world(side * sag, dv, ankle);
     out.parts.push_back(Primitive::capsule(foot, hip, b.leg_radius, owner));

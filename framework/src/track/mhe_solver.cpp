@@ -7,6 +7,8 @@
 #include <cmath>
 #include <mutex>
 
+#include "pedtrack/track/ipopt_lock.h"
+
 namespace pedtrack::track::mhe {
 namespace {
 
@@ -288,14 +290,6 @@ const char* toString(SolveResult::Status s) {
       break;
   }
   return "failed";
-}
-
-// Debian's MUMPS is the sequential build, whose Fortran modules keep global state (dmumps_load):
-// two Ipopt solves at once in one process (montecarlo -j, two pipelines) corrupt each other and
-// crash. Every Ipopt call of the process is serialised on this lock.
-std::mutex& ipoptLock() {
-  static std::mutex m;
-  return m;
 }
 
 struct MheSolver::Impl {

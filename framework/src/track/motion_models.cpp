@@ -177,4 +177,35 @@ Eigen::MatrixXd EllipseRandomWalk::noise(const Eigen::VectorXd&, double dt) cons
   return Q;
 }
 
+// ---- P3's pose constant acceleration ---------------------------------------------------------
+
+PoseConstantAcceleration::PoseConstantAcceleration(double ax, double ay, double at)
+    : var_{ax, ay, at} {
+  if (!(ax > 0 && ay > 0 && at > 0))
+    throw std::invalid_argument("pose-CA: acceleration variances must be positive");
+}
+
+Eigen::VectorXd PoseConstantAcceleration::predict(const Eigen::VectorXd& x, double dt) const {
+  return jacobian(x, dt) * x;
+}
+
+Eigen::MatrixXd PoseConstantAcceleration::jacobian(const Eigen::VectorXd&, double dt) const {
+  Eigen::MatrixXd F = Eigen::MatrixXd::Identity(9, 9);
+  for (int i = 0; i < 3; ++i) {
+    F(i, i + 3) = dt;
+    F(i, i + 6) = dt * dt / 2;
+    F(i + 3, i + 6) = dt;
+  }
+  return F;
+}
+
+Eigen::MatrixXd PoseConstantAcceleration::noise(const Eigen::VectorXd&, double dt) const {
+  const double g[3] = {dt * dt / 2, dt, 1};
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(9, 9);
+  for (int axis = 0; axis < 3; ++axis)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) Q(axis + 3 * a, axis + 3 * b) = var_[axis] * g[a] * g[b];
+  return Q;
+}
+
 }  // namespace pedtrack::track

@@ -1,6 +1,9 @@
 #pragma once
 // State errors over the CLEAR MOT matches: position, heading, torso shape, speed.
-//  - position: RMSE, MAE (= MOTP) and per-axis RMSE, in the compared frame;
+//  - position: RMSE, MAE (= MOTP) and per-axis RMSE, in the compared frame; MAE along the
+//    person's own axes (P3 Table 1), when the truth row has yaw: sagittal = the error's component
+//    along the truth heading (cos yaw, sin yaw), frontal = the component across it, both from the
+//    rows' fixed-frame x, y (the frame yaw is given in, also with --frame sensor);
 //  - heading: |wrap(yaw − yaw_true)| in [0, π], when both rows have yaw (velocity is not used);
 //    the axis error is that difference modulo π, in [−π/2, π/2] (front/back ignored: P0 Table I's
 //    "Abs. angular error" of ellipse / bounding-box orientations);
@@ -24,8 +27,11 @@ struct PairErrors {
   double major_sum = 0, minor_sum = 0;
   std::size_t speed_pairs = 0;
   double speed_sum = 0, velocity_sq_sum = 0;
-  double heading_sq_sum = 0;  ///< rad², of the heading pairs
-  double axis_sq_sum = 0;     ///< rad², of the heading pairs' errors modulo π
+  double heading_sq_sum = 0;   ///< rad², of the heading pairs
+  double axis_sq_sum = 0;      ///< rad², of the heading pairs' errors modulo π
+  std::size_t body_pairs = 0;  ///< pairs whose truth row has yaw
+  double sagittal_sum = 0;     ///< m, |error along the truth heading| of the body pairs
+  double frontal_sum = 0;      ///< m, |error across the truth heading| of the body pairs
 
   double rmse() const;
   double mae() const;
@@ -40,6 +46,8 @@ struct PairErrors {
   /// rad, √ of the mean squared axis error d − π·round(d / π), d = wrap(yaw − yaw_true); NaN
   /// without heading pairs.
   double axisRmse() const;
+  double sagittalMae() const;  ///< m, mean |error along the truth heading|; NaN without body pairs
+  double frontalMae() const;   ///< m, mean |error across the truth heading|; NaN without body pairs
   PairErrors& operator+=(const PairErrors& o);
 };
 

@@ -10,6 +10,8 @@
 //                               state a random walk with additive noise
 //   EllipseRandomWalk [x, y, θ, vx, vy, ω, α, β]  P0 eq. 1–2: constant velocity and turn rate,
 //                               the velocities and semi-axes random walks driven through G
+//   PoseConstantAcceleration [X, Y, θ, Ẋ, Ẏ, θ̇, Ẍ, Ÿ, θ̈]  P3 eq. 4: constant acceleration on
+//                               each of X, Y, θ, discrete white-noise acceleration
 #include <Eigen/Core>
 #include <memory>
 #include <string>
@@ -122,6 +124,25 @@ class EllipseRandomWalk : public MotionModel {
 
  private:
   Eigen::VectorXd q_;
+};
+
+/// P3 eq. 4: P = [H, Ḣ, Ḧ] with H = [X, Y, θ] and F the constant-acceleration transition per
+/// axis. The three axes are independent; each gets a discrete white-noise acceleration of
+/// variance σ²_a (P3: 10², 10², π²), Q_axis = σ²_a Γ Γᵀ with Γ = [Δt²/2, Δt, 1]ᵀ (Bar-Shalom et
+/// al. 2001, §6.3.3).
+class PoseConstantAcceleration : public MotionModel {
+ public:
+  /// std::invalid_argument unless all three variances are positive.
+  PoseConstantAcceleration(double var_ax, double var_ay, double var_atheta);
+  int dim() const override { return 9; }
+  std::string name() const override { return "pose-CA"; }
+  Eigen::VectorXd predict(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::MatrixXd jacobian(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::MatrixXd noise(const Eigen::VectorXd& x, double dt) const override;
+  Eigen::Vector2d velocity(const Eigen::VectorXd& x) const override { return x.segment<2>(3); }
+
+ private:
+  double var_[3];
 };
 
 }  // namespace pedtrack::track

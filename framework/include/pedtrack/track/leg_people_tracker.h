@@ -1,0 +1,99 @@
+#pragma once
+// Multi-person tracking from leg-height scans, in the manner of leg_tracker (Leigh et al., ICRA
+// 2015) with P3's pose estimator per person:
+//  - every leg-circle cluster is an object tracked by a constant-velocity filter, people's legs
+//    and clutter alike, so a bin or a table leg keeps its own track and cannot steal a leg's
+//    association; one global nearest-neighbour assignment (Hungarian) per scan;
+//  - a person's two leg objects are predicted by their LegPoseEstimator (gait model, step width),
+//    other objects by their own filter;
+//  - two free objects that look like legs (mean classifier score) and stand close together
+//    become a tentative person, never where the static scene says a wall or furniture stands;
+//  - a person is confirmed once it has moved (legs' classifier confidence and motion, as
+//    leg_tracker confirms), and deleted after a stretch with neither leg seen.
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pedtrack/frame.h"
+#include "pedtrack/track/gaussian.h"
+#include "pedtrack/track/leg_pose_estimator.h"
+#include "pedtrack/track/motion_models.h"
+
+namespace pedtrack::track {
+
+struct LegPeopleParams {
+  LegPoseParams pose;
+  double object_q = 4;            ///< m²/s³, CV noise of a lone object (a swinging leg: large)
+  double object_sigma = 0.03;     ///< m, leg centre measurement noise
+  double gate = 0.45;             ///< m, largest object-to-cluster distance of an association
+  double object_max_coast = 0.5;  ///< s, an object unseen this long is dropped
+  /// Objects with a mean classifier score ≥ this are leg-like. The shipped leg models are
+  /// Platt-calibrated on 1 leg per 19 non-legs, so 0.25 is already ~6× the prior odds.
+  double leg_score = 0.25;
+  double pair_distance = 0.7;   ///< m, two legs at most this far apart form a person
+  double confirm_travel = 0.5;  ///< m, a tentative person that moved this far is confirmed
+  double max_coast = 1.0;       ///< s, a person with no leg seen this long is deleted
+  double max_leg_spread = 1.0;  ///< m, a person whose legs drift farther apart loses one
+  double flip_speed = 0.5;      ///< m/s, walking backwards faster than this turns the track
+  double flip_time = 1.0;       ///< s, ... for this long
+  double init_speed = 0.3;      ///< m/s, a new person's facing is their legs' motion above this
+};
+
+/// A leg detection this scan: position (fixed frame), classifier score, the sensor seeing it.
+struct LegDetection {
+  Eigen::Vector2d p;
+  double score = 1;
+  Eigen::Vector2d sensor = Eigen::Vector2d::Zero();
+  int cluster = -1;
+};
+
+/// A person as reported.
+struct PersonState {
+  long id = 0;
+  bool confirmed = false;
+  bool seen = false;  ///< a leg of theirs was associated this scan
+  Eigen::Vector2d p, v;
+  double yaw = 0;
+  Eigen::Matrix2d cov;
+  double score = 0;  ///< mean leg-classifier score
+  MotionZone zone = MotionZone::GoStraight;
+  int cluster = -1;  ///< a cluster of theirs this scan, -1 none
+};
+
+class LegPeopleTracker {
+ public:
+  explicit LegPeopleTracker(const LegPeopleParams& p);
+  ~LegPeopleTracker();
+
+  /// One scan at time t. `is_static(x, y)` (may be empty) says whether a fixed-frame point lies
+  /// in the static scene, where no person may start.
+  void step(double t, const std::vector<LegDetection>& legs,
+            const std::function<bool(double, double)>& is_static);
+
+  std::vector<PersonState> people() const;
+  /// Fixed-frame positions of every person (tentative too) and their legs: what a static-scene
+  /// map must not absorb.
+  std::vector<Eigen::Vector2d> occupiedByPeople() const;
+  std::size_t objectCount() const;
+
+ private:
+  struct Object;
+  struct Person;
+  void associate(double t, const std::vector<LegDetection>& legs);
+  void updatePeople(double t, const std::vector<LegDetection>& legs);
+  void formPeople(double t, const std::vector<LegDetection>& legs,
+                  const std::function<bool(double, double)>& is_static);
+
+  LegPeopleParams p_;
+  ConstantVelocity object_model_;
+  std::vector<std::unique_ptr<Object>> objects_;
+  std::vector<std::unique_ptr<Person>> people_;
+  long next_object_ = 0, next_person_ = 0;
+  double t_ = 0;
+  bool started_ = false;
+};
+
+}  // namespace pedtrack::track

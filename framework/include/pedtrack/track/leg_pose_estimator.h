@@ -1,0 +1,109 @@
+#pragma once
+// One person seen as two legs (P3 §2.3–2.5): a constant-acceleration Kalman filter on the pose
+// [X, Y, θ] (eq. 4–5) whose position measurement is the legs' midpoint and whose orientation
+// measurement comes from the motion-intention zoning (leg_zoning.h); the step width W₀ learned
+// over the first seconds; the gait model (gait_model.h) predicting where each leg will be, so
+// the next scan's legs are told left from right by nearest neighbour; a leg hidden behind the
+// other placed by the hidden-area attraction of eq. 6–7.
+#include <Eigen/Core>
+#include <utility>
+#include <vector>
+
+#include "pedtrack/track/gait_model.h"
+#include "pedtrack/track/gaussian.h"
+#include "pedtrack/track/leg_zoning.h"
+#include "pedtrack/track/motion_models.h"
+
+namespace pedtrack::track {
+
+struct LegPoseParams {
+  double var_ax = 100, var_ay = 100;  ///< (m/s²)², P3 §2.5's σ²_ax, σ²_ay
+  double var_atheta = M_PI * M_PI;    ///< (rad/s²)², P3's σ²_aθ
+  double sigma_xy = 0.03;             ///< m, P3's σ_X = σ_Y
+  double sigma_theta = M_PI / 15;     ///< rad, P3's σ_θ
+  /// The measurement's standard deviations are multiplied by this when one leg was inferred
+  /// (P3: "while increasing the input's variance").
+  double inferred_sigma_scale = 3;
+  bool occlusion = true;     ///< eq. 6–7; false: a hidden leg is the plain prediction
+  double w0_default = 0.18;  ///< m, step width until one is learned
+  double w0_time = 3;        ///< s, W₀ is the mean frontal leg distance over this long
+  double leg_gate = 0.4;     ///< m, a leg farther from both predicted legs is not this person's
+  int gait_frames = 20;      ///< N of eq. 3 (P3: one gait cycle, 20 frames)
+  /// Eq. 3's solver: null = gait::fitVarPro; leg_pose can plug in gait::fitIpopt (a separate
+  /// library, so the framework does not depend on Ipopt).
+  gait::Params (*gait_solver)(const std::vector<gait::Sample>&, const gait::Bounds&,
+                              const gait::Params& previous) = nullptr;
+  ZoningParams zoning;
+  gait::Bounds gait;
+};
+
+/// A leg measurement in the fixed frame, or none.
+struct LegSeen {
+  bool seen = false;
+  Eigen::Vector2d p = Eigen::Vector2d::Zero();
+};
+
+class LegPoseEstimator {
+ public:
+  explicit LegPoseEstimator(const LegPoseParams& p);
+
+  /// Starts at the legs' midpoint facing `yaw`; the leg on the left of `yaw` is the left one.
+  void start(double t, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double yaw);
+  bool started() const { return started_; }
+
+  /// Predicts the pose to time t and where each leg will be.
+  void predict(double t);
+  const Eigen::Vector2d& predictedLeft() const { return pred_left_; }
+  const Eigen::Vector2d& predictedRight() const { return pred_right_; }
+
+  /// Nearest-neighbour labelling (P3 §2.5) of candidate leg positions to the predicted legs:
+  /// the pair (i → left, j → right) with the least summed squared distance, both within
+  /// leg_gate; else the single nearest within the gate. Indices into `candidates`, -1 for none.
+  std::pair<int, int> associate(const std::vector<Eigen::Vector2d>& candidates) const;
+
+  /// The update with this scan's labelled legs (either may be missing); `sensor` is the
+  /// scanner's position (fixed frame), the apex of eq. 6's hidden area.
+  void update(const LegSeen& left, const LegSeen& right, const Eigen::Vector2d& sensor);
+
+  /// A hidden leg's position by eq. 6–7: `visible` the other leg, `predicted` the hidden leg's
+  /// prediction, `hidden_for` the occlusion's duration T_o (s).
+  static Eigen::Vector2d hiddenLeg(const Eigen::Vector2d& sensor, const Eigen::Vector2d& visible,
+                                   const Eigen::Vector2d& predicted, double w0, double hidden_for);
+
+  const Gaussian& state() const { return g_; }
+  double x() const { return g_.x(0); }
+  double y() const { return g_.x(1); }
+  double yaw() const { return g_.x(2); }
+  Eigen::Vector2d velocity() const { return g_.x.segment<2>(3); }
+  /// Turns the estimate round by π (front and back swapped; left and right with them).
+  void turnAround();
+  MotionZone zone() const { return zone_; }
+  double stepWidth() const { return w0_; }
+  bool stepWidthLearned() const { return w0_learned_; }
+  const gait::Params& gait() const { return gait_; }
+  const Eigen::Vector2d& left() const { return left_; }    ///< last (measured or inferred) leg
+  const Eigen::Vector2d& right() const { return right_; }  ///< last (measured or inferred) leg
+
+ private:
+  void learnStepWidth(double distance);
+  void recordGait(double t);
+
+  LegPoseParams p_;
+  PoseConstantAcceleration model_;
+  Gaussian g_;
+  bool started_ = false;
+  double t_ = 0, t_start_ = 0, prev_yaw_ = 0;
+  double measured_yaw_ = 0;  // the last orientation measurement a turning zone gave
+  bool have_measured_yaw_ = false;
+  double hidden_left_ = 0, hidden_right_ = 0;  // T_o per leg, s
+  double w0_ = 0;
+  std::vector<double> w0_samples_;  // leg distances while W₀ is learned
+  bool w0_learned_ = false;
+  MotionZone zone_ = MotionZone::GoStraight;
+  Eigen::Vector2d body_d_ = Eigen::Vector2d::Zero();  // last leg vector in the body frame (u, v)
+  std::vector<gait::Sample> samples_;                 // newest first
+  gait::Params gait_;
+  Eigen::Vector2d pred_left_, pred_right_, left_, right_;
+};
+
+}  // namespace pedtrack::track

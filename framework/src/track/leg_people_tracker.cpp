@@ -1,0 +1,282 @@
+#include "pedtrack/track/leg_people_tracker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "pedtrack/assignment.h"
+#include "pedtrack/track/kalman.h"
+
+namespace pedtrack::track {
+
+struct LegPeopleTracker::Object {
+  long id = 0;
+  Gaussian g;
+  double last_seen = 0;
+  double score_sum = 0;
+  int detections = 0;
+  long person = -1;
+  int det = -1;  // this scan's detection, -1 none
+  Eigen::Vector2d predicted = Eigen::Vector2d::Zero();
+  double meanScore() const { return detections ? score_sum / detections : 0; }
+  Eigen::Vector2d pos() const { return g.x.head<2>(); }
+};
+
+struct LegPeopleTracker::Person {
+  long id = 0;
+  LegPoseEstimator est;
+  long left = -1, right = -1;  // object ids of the legs, -1 none
+  Eigen::Vector2d origin;
+  double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
+  double score_sum = 0;
+  int score_n = 0;
+  bool confirmed = false, seen = false;
+  int cluster = -1;
+  explicit Person(const LegPoseParams& p) : est(p) {}
+};
+
+LegPeopleTracker::LegPeopleTracker(const LegPeopleParams& p) : p_(p), object_model_(p.object_q) {}
+LegPeopleTracker::~LegPeopleTracker() = default;
+
+void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
+                            const std::function<bool(double, double)>& is_static) {
+  const double dt = started_ ? std::clamp(t - t_, 0.0, 1.0) : 0.0;
+  started_ = true;
+  t_ = t;
+  // Predictions: lone objects by their own filter, people's legs by the pose estimator.
+  for (auto& o : objects_) {
+    if (dt > 0) kalmanPredict(o->g, object_model_, dt);
+    o->predicted = o->pos();
+    o->det = -1;
+  }
+  for (auto& person : people_) {
+    person->est.predict(t);
+    for (auto& o : objects_) {
+      if (o->id == person->left) o->predicted = person->est.predictedLeft();
+      if (o->id == person->right) o->predicted = person->est.predictedRight();
+    }
+  }
+  associate(t, legs);
+  updatePeople(t, legs);
+  formPeople(t, legs, is_static);
+}
+
+void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs) {
+  const int rows = int(objects_.size()), cols = int(legs.size());
+  std::vector<double> cost(std::size_t(rows) * std::size_t(cols));
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j)
+      cost[std::size_t(i) * cols + j] = (objects_[std::size_t(i)]->predicted - legs[j].p).norm();
+  const Assignment a = solveAssignment(cost, rows, cols, p_.gate);
+  const LinearMeasurement m = positionMeasurement(4, p_.object_sigma);
+  for (int i = 0; i < rows; ++i) {
+    Object& o = *objects_[std::size_t(i)];
+    const int j = a.row_to_col[std::size_t(i)];
+    if (j < 0) continue;
+    // A person's leg restarts from the detection: its own CV filter lags a swinging leg.
+    kalmanUpdate(o.g, m, legs[std::size_t(j)].p);
+    o.last_seen = t;
+    o.score_sum += legs[std::size_t(j)].score;
+    ++o.detections;
+    o.det = j;
+  }
+  objects_.erase(std::remove_if(objects_.begin(), objects_.end(),
+                                [&](const std::unique_ptr<Object>& o) {
+                                  return t - o->last_seen > p_.object_max_coast;
+                                }),
+                 objects_.end());
+  for (int j = 0; j < cols; ++j) {
+    if (a.col_to_row[std::size_t(j)] >= 0) continue;
+    auto o = std::make_unique<Object>();
+    o->id = ++next_object_;
+    o->g.x = Eigen::Vector4d(legs[std::size_t(j)].p.x(), legs[std::size_t(j)].p.y(), 0, 0);
+    o->g.P =
+        Eigen::Vector4d(p_.object_sigma * p_.object_sigma, p_.object_sigma * p_.object_sigma, 1, 1)
+            .asDiagonal();
+    o->last_seen = t;
+    o->score_sum = legs[std::size_t(j)].score;
+    o->detections = 1;
+    o->det = j;
+    objects_.push_back(std::move(o));
+  }
+}
+
+namespace {
+template <class V>
+auto findObject(V& objects, long id) -> decltype(objects.front().get()) {
+  for (auto& o : objects)
+    if (o->id == id) return o.get();
+  return nullptr;
+}
+}  // namespace
+
+void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& legs) {
+  // Legs' object ids that no longer exist are freed.
+  for (auto& person : people_) {
+    if (!findObject(objects_, person->left)) person->left = -1;
+    if (!findObject(objects_, person->right)) person->right = -1;
+  }
+  for (auto& person : people_) {
+    Person& P = *person;
+    Object* lo = findObject(objects_, P.left);
+    Object* ro = findObject(objects_, P.right);
+    LegSeen l, r;
+    Eigen::Vector2d sensor = Eigen::Vector2d::Zero();
+    P.cluster = -1;
+    const double dt_person = t - P.last_step;
+    P.last_step = t;
+    if (lo && lo->det >= 0) l = {true, lo->pos()};
+    if (ro && ro->det >= 0) r = {true, ro->pos()};
+    // A free leg-like object near the person's missing leg becomes that leg.
+    for (int side = 0; side < 2; ++side) {
+      long& slot = side == 0 ? P.left : P.right;
+      if (slot >= 0) continue;
+      const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();
+      Object* best = nullptr;
+      double bd = p_.pose.leg_gate;
+      for (auto& o : objects_) {
+        if (o->person >= 0 || o->det < 0 || o->meanScore() < p_.leg_score) continue;
+        const double d = (o->pos() - want).norm();
+        if (d < bd) bd = d, best = o.get();
+      }
+      if (!best) continue;
+      best->person = P.id;
+      slot = best->id;
+      (side == 0 ? l : r) = {true, best->pos()};
+    }
+    P.seen = l.seen || r.seen;
+    if (P.seen) {
+      P.last_seen = t;
+      for (Object* o : {findObject(objects_, P.left), findObject(objects_, P.right)})
+        if (o && o->det >= 0) {
+          P.score_sum += o->meanScore();
+          ++P.score_n;
+        }
+    }
+    // The scanner that saw the visible leg is the apex of eq. 6's hidden area.
+    for (Object* o : {findObject(objects_, P.left), findObject(objects_, P.right)})
+      if (o && o->det >= 0) {
+        sensor = legs[std::size_t(o->det)].sensor;
+        P.cluster = legs[std::size_t(o->det)].cluster;
+      }
+    P.est.update(l, r, sensor);
+    const Eigen::Vector2d c(P.est.x(), P.est.y());
+    P.travelled = std::max(P.travelled, (c - P.origin).norm());
+    if (!P.confirmed && P.travelled >= p_.confirm_travel &&
+        P.score_sum / std::max(1, P.score_n) >= p_.leg_score)
+      P.confirmed = true;
+    // Walking backwards fast for long is a facing chosen wrong at the start.
+    const Eigen::Vector2d v = P.est.velocity();
+    const Eigen::Vector2d fwd(std::cos(P.est.yaw()), std::sin(P.est.yaw()));
+    P.backwards = v.norm() > p_.flip_speed && v.dot(fwd) < 0 ? P.backwards + dt_person : 0;
+    if (P.backwards >= p_.flip_time) {
+      P.est.turnAround();
+      std::swap(P.left, P.right);
+      P.backwards = 0;
+    }
+    // Legs drifting apart: the one farther from the body is someone else's.
+    lo = findObject(objects_, P.left);
+    ro = findObject(objects_, P.right);
+    if (lo && ro && (lo->pos() - ro->pos()).norm() > p_.max_leg_spread) {
+      Object* far = (lo->pos() - c).norm() > (ro->pos() - c).norm() ? lo : ro;
+      far->person = -1;
+      (far == lo ? P.left : P.right) = -1;
+    }
+  }
+  // Deleted people free their legs.
+  for (auto& person : people_) {
+    if (t - person->last_seen <= p_.max_coast) continue;
+    for (auto& o : objects_)
+      if (o->person == person->id) o->person = -1;
+  }
+  people_.erase(std::remove_if(people_.begin(), people_.end(),
+                               [&](const std::unique_ptr<Person>& q) {
+                                 return t - q->last_seen > p_.max_coast;
+                               }),
+                people_.end());
+}
+
+void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& legs,
+                                  const std::function<bool(double, double)>& is_static) {
+  // Free, leg-like objects seen this scan, paired closest first.
+  std::vector<Object*> free;
+  for (auto& o : objects_)
+    if (o->person < 0 && o->det >= 0 && o->meanScore() >= p_.leg_score) free.push_back(o.get());
+  std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < free.size(); ++i)
+    for (std::size_t j = i + 1; j < free.size(); ++j) {
+      const double d = (free[i]->pos() - free[j]->pos()).norm();
+      if (d <= p_.pair_distance) pairs.emplace_back(d, i, j);
+    }
+  std::sort(pairs.begin(), pairs.end());
+  std::vector<bool> used(free.size(), false);
+  for (const auto& [d, i, j] : pairs) {
+    if (used[i] || used[j]) continue;
+    Object* a = free[i];
+    Object* b = free[j];
+    if (is_static &&
+        (is_static(a->pos().x(), a->pos().y()) || is_static(b->pos().x(), b->pos().y())))
+      continue;
+    used[i] = used[j] = true;
+    // Facing: the legs' motion when they move, else towards the scanner seeing them.
+    const Eigen::Vector2d mid = 0.5 * (a->pos() + b->pos());
+    const Eigen::Vector2d v = 0.5 * (a->g.x.segment<2>(2) + b->g.x.segment<2>(2));
+    double yaw;
+    if (v.norm() >= p_.init_speed) {
+      yaw = std::atan2(v.y(), v.x());
+    } else {
+      const Eigen::Vector2d to_sensor = legs[std::size_t(a->det)].sensor - mid;
+      yaw = std::atan2(to_sensor.y(), to_sensor.x());
+    }
+    auto person = std::make_unique<Person>(p_.pose);
+    person->id = ++next_person_;
+    person->est.start(t, a->pos(), b->pos(), yaw);
+    const bool a_left = person->est.left() == a->pos();
+    person->left = a_left ? a->id : b->id;
+    person->right = a_left ? b->id : a->id;
+    a->person = b->person = person->id;
+    person->origin = mid;
+    person->last_seen = person->last_step = t;
+    person->score_sum = a->meanScore() + b->meanScore();
+    person->score_n = 2;
+    person->seen = true;
+    person->cluster = legs[std::size_t(a->det)].cluster;
+    people_.push_back(std::move(person));
+  }
+}
+
+std::vector<PersonState> LegPeopleTracker::people() const {
+  std::vector<PersonState> out;
+  out.reserve(people_.size());
+  for (const auto& q : people_) {
+    PersonState s;
+    s.id = q->id;
+    s.confirmed = q->confirmed;
+    s.seen = q->seen;
+    s.p = {q->est.x(), q->est.y()};
+    s.v = q->est.velocity();
+    s.yaw = q->est.yaw();
+    s.cov = q->est.state().P.topLeftCorner<2, 2>();
+    s.score = q->score_sum / std::max(1, q->score_n);
+    s.zone = q->est.zone();
+    s.cluster = q->cluster;
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector2d> LegPeopleTracker::occupiedByPeople() const {
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& q : people_) {
+    out.emplace_back(q->est.x(), q->est.y());
+    out.push_back(q->est.left());
+    out.push_back(q->est.right());
+  }
+  return out;
+}
+
+std::size_t LegPeopleTracker::objectCount() const {
+  return objects_.size();
+}
+
+}  // namespace pedtrack::track

@@ -1,0 +1,208 @@
+#include "pedtrack/track/leg_pose_estimator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pedtrack/track/kalman.h"
+
+namespace pedtrack::track {
+namespace {
+
+constexpr double kMaxCoastSpeed = 2.0;  // m/s
+
+Eigen::Vector2d rotate(double yaw, const Eigen::Vector2d& v) {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+}  // namespace
+
+LegPoseEstimator::LegPoseEstimator(const LegPoseParams& p)
+    : p_(p), model_(p.var_ax, p.var_ay, p.var_atheta), w0_(p.w0_default) {}
+
+void LegPoseEstimator::start(double t, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                             double yaw) {
+  const Eigen::Vector2d left_dir = rotate(yaw, {0, 1});
+  const bool a_left = (a - b).dot(left_dir) >= 0;
+  left_ = a_left ? a : b;
+  right_ = a_left ? b : a;
+  g_.x = Eigen::VectorXd::Zero(9);
+  g_.x.head<2>() = 0.5 * (a + b);
+  g_.x(2) = yaw;
+  // Position and heading as measured; velocity and acceleration unknown (a walk, a stride).
+  g_.P = Eigen::MatrixXd::Zero(9, 9);
+  const double sp = p_.sigma_xy, st = p_.sigma_theta;
+  g_.P.diagonal() << sp * sp, sp * sp, st * st, 1, 1, 1, 4, 4, 4;
+  t_ = t_start_ = t;
+  prev_yaw_ = yaw;
+  measured_yaw_ = yaw;
+  have_measured_yaw_ = true;
+  body_d_ = rotate(-yaw, left_ - right_);
+  started_ = true;
+  pred_left_ = left_;
+  pred_right_ = right_;
+}
+
+void LegPoseEstimator::predict(double t) {
+  const double dt = std::max(0.0, t - t_);
+  prev_yaw_ = g_.x(2);
+  if (hidden_left_ > 0 && hidden_right_ > 0) {
+    // Coasting (no leg last scan): P3's constant acceleration, driven by σ_a = 10 m/s², would
+    // extrapolate a stride's acceleration quadratically; a person unseen keeps at most their
+    // speed, bounded by a brisk walk.
+    g_.x.tail<3>().setZero();
+    const double v = g_.x.segment<2>(3).norm();
+    if (v > kMaxCoastSpeed) g_.x.segment<2>(3) *= kMaxCoastSpeed / v;
+  }
+  if (dt > 0) kalmanPredict(g_, model_, dt);
+  g_.x(2) = wrapAngle(g_.x(2));
+  hidden_left_ += dt;
+  hidden_right_ += dt;
+  t_ = t;
+  // Usual motion: the gait model gives the sagittal spread, the step width the frontal one.
+  // Unusual motion: legs symmetric about the sagittal plane, as far apart as last seen.
+  Eigen::Vector2d d = body_d_;
+  if (isUsual(zone_)) {
+    d.y() = w0_;
+    if (gait_.valid) d.x() = gait_.at(t);
+  } else {
+    d = {0, std::max(body_d_.y(), w0_)};
+  }
+  const Eigen::Vector2d c = g_.x.head<2>(), half = 0.5 * rotate(g_.x(2), d);
+  pred_left_ = c + half;
+  pred_right_ = c - half;
+}
+
+std::pair<int, int> LegPoseEstimator::associate(const std::vector<Eigen::Vector2d>& cand) const {
+  const double gate2 = p_.leg_gate * p_.leg_gate;
+  std::pair<int, int> best{-1, -1};
+  double best_cost = INFINITY;
+  const int n = int(cand.size());
+  for (int i = 0; i < n; ++i) {
+    const double dl = (cand[i] - pred_left_).squaredNorm();
+    if (dl > gate2) continue;
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      const double dr = (cand[j] - pred_right_).squaredNorm();
+      if (dr > gate2 || dl + dr >= best_cost) continue;
+      best_cost = dl + dr;
+      best = {i, j};
+    }
+  }
+  if (best.first >= 0) return best;
+  for (int i = 0; i < n; ++i) {
+    const double dl = (cand[i] - pred_left_).squaredNorm();
+    const double dr = (cand[i] - pred_right_).squaredNorm();
+    const double d = std::min(dl, dr);
+    if (d > gate2 || d >= best_cost) continue;
+    best_cost = d;
+    best = dl <= dr ? std::make_pair(i, -1) : std::make_pair(-1, i);
+  }
+  return best;
+}
+
+Eigen::Vector2d LegPoseEstimator::hiddenLeg(const Eigen::Vector2d& sensor,
+                                            const Eigen::Vector2d& visible,
+                                            const Eigen::Vector2d& predicted, double w0,
+                                            double hidden_for) {
+  const Eigen::Vector2d sl = visible - sensor;
+  const double n = sl.norm();
+  if (n < 1e-9) return predicted;
+  const Eigen::Vector2d ro = sensor + (w0 / n + 1) * sl;  // eq. 6
+  const double alpha = std::exp(-hidden_for);             // α = 1 / e^{T_o}
+  return alpha * predicted + (1 - alpha) * ro;            // eq. 7
+}
+
+void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
+                              const Eigen::Vector2d& sensor) {
+  if (!left.seen && !right.seen) return;  // coast on the prediction
+  bool inferred = false;
+  if (left.seen) {
+    left_ = left.p;
+    hidden_left_ = 0;
+  }
+  if (right.seen) {
+    right_ = right.p;
+    hidden_right_ = 0;
+  }
+  if (!right.seen) {
+    right_ = p_.occlusion ? hiddenLeg(sensor, left_, pred_right_, w0_, hidden_right_) : pred_right_;
+    inferred = true;
+  } else if (!left.seen) {
+    left_ = p_.occlusion ? hiddenLeg(sensor, right_, pred_left_, w0_, hidden_left_) : pred_left_;
+    inferred = true;
+  }
+  const ZoneResult z = zoneOrientation(left_, right_, prev_yaw_, w0_, p_.zoning);
+  // z = [midpoint, θ_m] (eq. 5); the midpoint alone when the legs give no orientation.
+  const int rows = z.observable ? 3 : 2;
+  Eigen::VectorXd meas(rows);
+  meas.head<2>() = 0.5 * (left_ + right_);
+  LinearMeasurement m;
+  m.H = Eigen::MatrixXd::Zero(rows, 9);
+  m.H.leftCols(rows).setIdentity();
+  const double k = inferred ? p_.inferred_sigma_scale : 1.0;
+  const double sp = k * p_.sigma_xy, st = k * p_.sigma_theta;
+  m.R = Eigen::MatrixXd::Zero(rows, rows);
+  m.R(0, 0) = m.R(1, 1) = sp * sp;
+  if (z.observable) {
+    // P3: in go-straight and move-sideways "the human orientation estimation keeps constant":
+    // the measurement stays the last one a turning zone gave (not the drifting posterior, whose
+    // turn rate would otherwise carry the heading on while the person walks straight).
+    const bool unchanged = z.yaw == prev_yaw_;
+    if (!unchanged || !have_measured_yaw_) measured_yaw_ = z.yaw;
+    have_measured_yaw_ = true;
+    meas(2) = measured_yaw_;
+    m.R(2, 2) = st * st;
+    m.angle_rows = {2};
+    zone_ = z.zone;
+  }
+  kalmanUpdate(g_, m, meas);
+  g_.x(2) = wrapAngle(g_.x(2));
+  body_d_ = rotate(-g_.x(2), left_ - right_);
+  if (!inferred && z.observable) {
+    learnStepWidth(body_d_.norm());
+    if (isUsual(zone_)) recordGait(t_);
+  }
+}
+
+void LegPoseEstimator::learnStepWidth(double distance) {
+  if (w0_learned_) return;
+  if (t_ - t_start_ > p_.w0_time && !w0_samples_.empty()) {
+    w0_learned_ = true;
+    return;
+  }
+  if (distance > 2 * p_.leg_gate) return;  // not one person's legs
+  // The legs' distance, not its frontal part (which depends on the heading being estimated),
+  // and a low quantile, not the mean: over a stride |d| is √(W² + L_p²), smallest (= W) as the
+  // legs pass each other; a side step or a turn only ever widens it. A person who starts by
+  // stepping sideways (P3 scenario 2) or turning (scenario 3) then still learns their W.
+  w0_samples_.push_back(distance);
+  std::vector<double> v = w0_samples_;
+  auto q = v.begin() + std::ptrdiff_t(0.1 * double(v.size() - 1));
+  std::nth_element(v.begin(), q, v.end());
+  w0_ = *q;
+}
+
+void LegPoseEstimator::recordGait(double t) {
+  samples_.insert(samples_.begin(), gait::Sample{t, body_d_.x()});
+  if (int(samples_.size()) > p_.gait_frames) samples_.resize(std::size_t(p_.gait_frames));
+  const gait::Params fit = p_.gait_solver ? p_.gait_solver(samples_, p_.gait, gait_)
+                                          : gait::fitVarPro(samples_, p_.gait);
+  if (fit.valid) gait_ = fit;
+}
+
+void LegPoseEstimator::turnAround() {
+  g_.x(2) = wrapAngle(g_.x(2) + M_PI);
+  g_.x(5) = 0;  // the turn rate belonged to the wrong facing
+  g_.x(8) = 0;
+  std::swap(left_, right_);
+  std::swap(pred_left_, pred_right_);
+  std::swap(hidden_left_, hidden_right_);
+  prev_yaw_ = g_.x(2);
+  measured_yaw_ = wrapAngle(measured_yaw_ + M_PI);
+  body_d_ = rotate(-g_.x(2), left_ - right_);
+  samples_.clear();
+  gait_ = gait::Params{};
+}
+
+}  // namespace pedtrack::track

@@ -1,0 +1,82 @@
+#include "pedtrack/track/leg_pose_params.h"
+
+#include <cmath>
+
+#include "pedtrack/errors.h"
+
+namespace pedtrack::track {
+
+std::vector<ParamSpec> legPoseParamSpecs() {
+  const LegPoseParams d;
+  const double deg = 180 / M_PI;
+  return {
+      ParamSpec::vector("accel_var", std::vector<double>{d.var_ax, d.var_ay, d.var_atheta}, "", 3,
+                        1e-9, 1e9,
+                        "variances of the X, Y, theta accelerations' white noise, (m/s2)2 and "
+                        "(rad/s2)2 (P3 eq. 4: 10^2, 10^2, pi^2)"),
+      ParamSpec::real("sigma_xy", d.sigma_xy, "m", 1e-6, 10,
+                      "std. dev. of the legs' midpoint measurement (P3 eq. 5: 0.03)"),
+      ParamSpec::real("sigma_theta", d.sigma_theta * deg, "deg", 1e-3, 180,
+                      "std. dev. of the zoning's orientation measurement (P3 eq. 5: pi/15 = 12)"),
+      ParamSpec::real("inferred_sigma_scale", d.inferred_sigma_scale, "", 1, 1000,
+                      "measurement std. dev. factor when one leg was inferred (hidden)"),
+      ParamSpec::boolean("occlusion", d.occlusion,
+                         "P3 eq. 6-7: a hidden leg is attracted to the area behind the visible "
+                         "one; false: the gait prediction alone"),
+      ParamSpec::real("w0_default", d.w0_default, "m", 0.01, 1,
+                      "step width W0 used until one is learned"),
+      ParamSpec::real("w0_time", d.w0_time, "s", 0, 600,
+                      "W0 is the mean frontal leg distance over the track's first seconds"),
+      ParamSpec::real("leg_gate", d.leg_gate, "m", 0.01, 5,
+                      "legs farther than this from both predicted legs are not the person's"),
+      ParamSpec::integer("gait_frames", d.gait_frames, "frames", 5, 1000,
+                         "N of eq. 3: the gait model's window (P3: 20, one gait cycle)"),
+      ParamSpec::choice("gait_solver", "varpro", {"varpro", "ipopt"},
+                        "eq. 3's solver: varpro (global in f, microseconds) or ipopt (local, "
+                        "from the previous fit; P3 used a local method, COBYLA)"),
+      ParamSpec::vector("gait_bounds",
+                        std::vector<double>{d.gait.l0_min, d.gait.l0_max, d.gait.f_min,
+                                            d.gait.f_max, d.gait.b_min, d.gait.b_max},
+                        "", 6, -10, 10,
+                        "L0 min max (m), f min max (Hz), b min max (m) of eq. 3 (P3: 0.1 0.5 0.5 "
+                        "1.5 0 0.5)"),
+      ParamSpec::real("width_tolerance", d.zoning.width_tolerance, "", 0, 10,
+                      "go-straight zone: frontal leg distance within W0 +/- this fraction of W0"),
+      ParamSpec::real("sideways_tolerance", d.zoning.sideways_tolerance, "", 0, 10,
+                      "move-sideways zone: legs apart beyond the band with the sagittal leg "
+                      "distance within this fraction of W0"),
+      ParamSpec::boolean("refine_straight", d.zoning.refine_straight,
+                         "measure small turns inside the go-straight band when the legs are apart "
+                         "sagittally (ours); false: P3's constant orientation there"),
+      ParamSpec::real("slight_turn_max", d.zoning.slight_turn_max * deg, "deg", 0, 180,
+                      "larger orientation changes are turn-in-place (sagittal axis "
+                      "perpendicular to the legs)"),
+  };
+}
+
+LegPoseParams readLegPoseParams(const ParamSet& s) {
+  LegPoseParams p;
+  const double rad = M_PI / 180;
+  const std::vector<double> a = s.getVector("accel_var");
+  p.var_ax = a[0], p.var_ay = a[1], p.var_atheta = a[2];
+  p.sigma_xy = s.getDouble("sigma_xy");
+  p.sigma_theta = s.getDouble("sigma_theta") * rad;
+  p.inferred_sigma_scale = s.getDouble("inferred_sigma_scale");
+  p.occlusion = s.getBool("occlusion");
+  p.w0_default = s.getDouble("w0_default");
+  p.w0_time = s.getDouble("w0_time");
+  p.leg_gate = s.getDouble("leg_gate");
+  p.gait_frames = int(s.getInt("gait_frames"));
+  const std::vector<double> b = s.getVector("gait_bounds");
+  p.gait = {b[0], b[1], b[2], b[3], b[4], b[5]};
+  if (!(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5] && b[2] > 0))
+    throw ConfigError(s.where("gait_bounds") +
+                      ": each min must not exceed its max and f_min must be positive");
+  p.zoning.width_tolerance = s.getDouble("width_tolerance");
+  p.zoning.sideways_tolerance = s.getDouble("sideways_tolerance");
+  p.zoning.refine_straight = s.getBool("refine_straight");
+  p.zoning.slight_turn_max = s.getDouble("slight_turn_max") * rad;
+  return p;
+}
+
+}  // namespace pedtrack::track

@@ -1,0 +1,206 @@
+// P3's leg-pair pose parts against known values: the gait fit (eq. 3) recovers the parameters of
+// a synthetic gait with both solvers, the zoning (§2.3) gives the expected zone and orientation
+// on hand-made leg pairs, the hidden leg follows eq. 6-7, the pose filter (eq. 4-5) tracks a
+// synthetic walk, and the multi-person tracker keeps two walkers apart.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include "pedtrack/track/gait_fit_ipopt.h"
+#include "pedtrack/track/gait_model.h"
+#include "pedtrack/track/leg_people_tracker.h"
+#include "pedtrack/track/leg_pose_estimator.h"
+#include "pedtrack/track/leg_zoning.h"
+#include "pedtrack/track/motion_models.h"
+
+using namespace pedtrack::track;
+using Catch::Detail::Approx;
+
+namespace {
+
+std::vector<gait::Sample> synthetic(double l0, double f, double phi_now, double b, int n,
+                                    double t_now, double dt) {
+  std::vector<gait::Sample> s;
+  for (int j = 0; j < n; ++j) {  // newest first
+    const double t = t_now - j * dt;
+    s.push_back({t, l0 * std::cos(2 * M_PI * f * (t - t_now) + phi_now) + b});
+  }
+  return s;
+}
+
+double angleDiff(double a, double b) {
+  return std::abs(std::remainder(a - b, 2 * M_PI));
+}
+
+}  // namespace
+
+TEST_CASE("the gait fit recovers known L0, f, phi and b", "[legs]") {
+  const gait::Bounds bounds;
+  const auto s = synthetic(0.3, 0.9, 1.2, 0.05, 20, 1000.0, 0.1);
+  const gait::Params vp = gait::fitVarPro(s, bounds);
+  REQUIRE(vp.valid);
+  CHECK(vp.l0 == Approx(0.3).margin(1e-4));
+  CHECK(vp.f == Approx(0.9).margin(1e-4));
+  CHECK(angleDiff(vp.phi, 1.2) < 1e-3);
+  CHECK(vp.b == Approx(0.05).margin(1e-4));
+  CHECK(vp.at(1000.1) == Approx(0.3 * std::cos(2 * M_PI * 0.9 * 0.1 + 1.2) + 0.05).margin(1e-4));
+  // Ipopt from the middle of the bounds finds the same optimum.
+  const gait::Params ip = gait::fitIpopt(s, bounds, gait::Params{});
+  REQUIRE(ip.valid);
+  CHECK(ip.l0 == Approx(0.3).margin(1e-3));
+  CHECK(ip.f == Approx(0.9).margin(1e-3));
+  CHECK(angleDiff(ip.phi, 1.2) < 1e-2);
+  CHECK(ip.b == Approx(0.05).margin(1e-3));
+}
+
+TEST_CASE("the gait fit keeps P3's bounds", "[legs]") {
+  const gait::Bounds bounds;
+  // A 0.8 m amplitude with a negative offset: both outside eq. 3's box.
+  const auto s = synthetic(0.8, 1.0, 0.0, -0.2, 20, 5.0, 0.1);
+  const gait::Params vp = gait::fitVarPro(s, bounds);
+  REQUIRE(vp.valid);
+  CHECK(vp.l0 <= bounds.l0_max + 1e-12);
+  CHECK(vp.b >= bounds.b_min - 1e-12);
+  CHECK(vp.f >= bounds.f_min);
+  CHECK(vp.f <= bounds.f_max);
+  CHECK_FALSE(gait::fitVarPro(std::vector<gait::Sample>(4), bounds).valid);
+}
+
+TEST_CASE("zoning gives the expected zone and orientation", "[legs]") {
+  const ZoningParams zp;  // band ±15 % of W0, side step |d_u| ≤ 0.3 W0, slight turn ≤ 45°
+  const double w0 = 0.2;
+  // Facing +x (yaw 0): left leg at +y. Walking straight: frontal W0, sagittal swing.
+  ZoneResult z = zoneOrientation({0.15, 0.1}, {-0.15, -0.1}, 0, w0, zp);
+  CHECK(z.zone == MotionZone::GoStraight);
+  CHECK(z.frontal == Approx(0.2));
+  CHECK(z.sagittal == Approx(0.3));
+  // The same legs seen 5° off: the band is kept, the two-line refinement measures the 5°.
+  z = zoneOrientation({0.15, 0.1}, {-0.15, -0.1}, 5 * M_PI / 180, w0, zp);
+  CHECK(z.zone == MotionZone::GoStraight);
+  CHECK(angleDiff(z.yaw, 0) < 1e-9);
+  ZoningParams literal = zp;
+  literal.refine_straight = false;  // P3: constant orientation in the go-straight zone
+  CHECK(angleDiff(zoneOrientation({0.15, 0.1}, {-0.15, -0.1}, 5 * M_PI / 180, w0, literal).yaw,
+                  5 * M_PI / 180) < 1e-12);
+  // Legs apart side by side, 0.4 m: a side step, orientation kept.
+  z = zoneOrientation({0, 0.2}, {0, -0.2}, 0, w0, zp);
+  CHECK(z.zone == MotionZone::Sideways);
+  CHECK(z.yaw == 0);
+  // A person facing 20° with legs W0 apart frontally and 0.3 m sagittally, seen from yaw 0:
+  // the frontal distance leaves the band, two lines W0 apart give the 20° turn.
+  const double a = 20 * M_PI / 180;
+  const Eigen::Vector2d fwd(std::cos(a), std::sin(a)), left(-std::sin(a), std::cos(a));
+  const Eigen::Vector2d d = 0.3 * fwd + w0 * left;
+  z = zoneOrientation(0.5 * d, -0.5 * d, 0, w0, zp);
+  CHECK(z.zone == MotionZone::SlightTurn);
+  CHECK(z.yaw == Approx(a).margin(1e-9));
+  // Turned 90° in place (legs side by side along x): the sagittal axis is perpendicular to them.
+  z = zoneOrientation({0.1, 0}, {-0.1, 0}, 0, w0, zp);
+  CHECK(z.zone == MotionZone::TurnInPlace);
+  CHECK(z.yaw == Approx(-M_PI / 2));
+  // Legs merged into one place: no orientation.
+  CHECK_FALSE(zoneOrientation({0.01, 0}, {0, 0}, 0, w0, zp).observable);
+}
+
+TEST_CASE("a hidden leg follows eq. 6 and 7", "[legs]") {
+  const Eigen::Vector2d sensor(0, 0), visible(2, 0), predicted(2, 0.3);
+  const double w0 = 0.2;
+  // Eq. 6: R_o = S + (W0/|SL| + 1) SL = (2.2, 0). Eq. 7 with α = e^{−T_o}.
+  for (double t_o : {0.0, 0.1, 1.0, 10.0}) {
+    const double alpha = std::exp(-t_o);
+    const Eigen::Vector2d r = LegPoseEstimator::hiddenLeg(sensor, visible, predicted, w0, t_o);
+    CHECK(r.x() == Approx(alpha * 2 + (1 - alpha) * 2.2));
+    CHECK(r.y() == Approx(alpha * 0.3).margin(1e-12));
+  }
+}
+
+TEST_CASE("P3's pose filter noise is the discrete white-noise acceleration of eq. 4", "[legs]") {
+  const PoseConstantAcceleration m(100, 100, M_PI * M_PI);
+  const Eigen::MatrixXd Q = m.noise(Eigen::VectorXd::Zero(9), 0.1);
+  CHECK(Q(0, 0) == Approx(100 * 0.005 * 0.005));  // (Δt²/2)² σ²
+  CHECK(Q(0, 3) == Approx(100 * 0.005 * 0.1));
+  CHECK(Q(8, 8) == Approx(M_PI * M_PI));
+  CHECK(Q(0, 1) == 0);  // axes independent
+  const Eigen::MatrixXd F = m.jacobian(Eigen::VectorXd::Zero(9), 0.1);
+  CHECK(F(0, 6) == Approx(0.005));
+  CHECK(F(3, 6) == Approx(0.1));
+}
+
+TEST_CASE("the leg pose estimator tracks a straight walk and its heading", "[legs]") {
+  // A person walking along +y at 1 m/s, stride frequency 0.9 Hz, legs W = 0.18 m apart.
+  LegPoseParams p;
+  LegPoseEstimator est(p);
+  const double yaw = M_PI / 2, w = 0.18, f = 0.9, l0 = 0.3;
+  auto legs = [&](double t) {
+    const Eigen::Vector2d c(0, t), fwd(0, 1), left(-1, 0);
+    const double lp = l0 * std::sin(2 * M_PI * f * t);
+    const Eigen::Vector2d half = 0.5 * (lp * fwd + w * left);  // evaluated: no dangling expression
+    return std::make_pair(Eigen::Vector2d(c + half), Eigen::Vector2d(c - half));
+  };
+  const Eigen::Vector2d sensor(3, 0);
+  est.start(0, legs(0).first, legs(0).second, yaw);
+  double worst_yaw = 0, worst_pos = 0, sum_yaw = 0;
+  int scored = 0;
+  for (int k = 1; k <= 60; ++k) {
+    const double t = 0.1 * k;
+    est.predict(t);
+    const auto [l, r] = legs(t);
+    const std::vector<Eigen::Vector2d> cand{r, l};  // unlabelled, in the wrong order
+    const auto [li, ri] = est.associate(cand);
+    INFO("step " << k << " predicted left " << est.predictedLeft().transpose() << " right "
+                 << est.predictedRight().transpose() << " yaw " << est.yaw());
+    REQUIRE(li == 1);  // nearest neighbour to the gait-predicted legs labels them
+    REQUIRE(ri == 0);
+    est.update({true, cand[std::size_t(li)]}, {true, cand[std::size_t(ri)]}, sensor);
+    if (k > 10) {
+      worst_yaw = std::max(worst_yaw, angleDiff(est.yaw(), yaw));
+      sum_yaw += angleDiff(est.yaw(), yaw);
+      ++scored;
+      worst_pos = std::max(worst_pos, std::hypot(est.x(), est.y() - t));
+    }
+  }
+  // The learned W0 (a low quantile of sampled leg distances) sits a little above W, which tilts
+  // the two-line construction by a few degrees at mid-stride.
+  CHECK(sum_yaw / scored < 2.5 * M_PI / 180);
+  CHECK(worst_yaw < 7 * M_PI / 180);
+  CHECK(worst_pos < 0.05);
+  CHECK(est.stepWidth() == Approx(w).margin(0.03));
+  CHECK(est.gait().valid);
+  CHECK(est.velocity().y() == Approx(1).margin(0.1));
+}
+
+TEST_CASE("two people walking past each other keep their tracks", "[legs]") {
+  LegPeopleParams p;
+  LegPeopleTracker tr(p);
+  auto person = [](double x0, double vx, double y, double t, std::vector<LegDetection>& out) {
+    const double x = x0 + vx * t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+    const double s = vx > 0 ? 1 : -1;
+    out.push_back({{x + s * lp / 2, y + 0.09}, 0.9, {0, 0}, -1});
+    out.push_back({{x - s * lp / 2, y - 0.09}, 0.9, {0, 0}, -1});
+  };
+  std::vector<long> ids_a, ids_b;
+  for (int k = 0; k < 60; ++k) {
+    const double t = 0.1 * k;
+    std::vector<LegDetection> legs;
+    person(-3, 1.0, 2.0, t, legs);
+    person(3, -1.0, 3.0, t, legs);
+    tr.step(t, legs, {});
+    for (const PersonState& s : tr.people()) {
+      if (!s.confirmed) continue;
+      (s.p.y() < 2.5 ? ids_a : ids_b).push_back(s.id);
+      CHECK(std::abs(s.p.y() - (s.p.y() < 2.5 ? 2.0 : 3.0)) < 0.1);
+    }
+  }
+  REQUIRE(ids_a.size() > 40);
+  REQUIRE(ids_b.size() > 40);
+  CHECK(std::count(ids_a.begin(), ids_a.end(), ids_a.front()) == long(ids_a.size()));
+  CHECK(std::count(ids_b.begin(), ids_b.end(), ids_b.front()) == long(ids_b.size()));
+  CHECK(ids_a.front() != ids_b.front());
+  // A static pole-like detection never becomes a confirmed person.
+  LegPeopleTracker poles(p);
+  for (int k = 0; k < 50; ++k) {
+    std::vector<LegDetection> legs{{{1, 1}, 0.9, {0, 0}, -1}, {{1.3, 1}, 0.9, {0, 0}, -1}};
+    poles.step(0.1 * k, legs, {});
+    for (const PersonState& s : poles.people()) CHECK_FALSE(s.confirmed);
+  }
+}
