@@ -115,6 +115,10 @@ TEST_CASE("a wall is static once seen for persist seconds and not before", "[sta
   CHECK_FALSE(ss.isStatic(2.0, 0, t));
   CHECK_FALSE(ss.isStatic(kWallX + 0.07, 0, t));
   CHECK(ss.isStatic(kWallX + 0.07, 0, t, 0.1));
+  // The debugging picture of the grid.
+  const std::string png = test::freshDir("static_scene_png") + "/grid.png";
+  CHECK(ss.saveImage(png));
+  CHECK(test::readFile(png).size() > 100);
 }
 
 TEST_CASE("a tracked person standing still for a minute never becomes static", "[static_scene]") {
@@ -240,7 +244,7 @@ TEST_CASE("rays clear free space in every direction, diagonals included", "[stat
   // old ring, whatever its bearing (octant boundaries and exact diagonals too), is crossed by
   // rays to the new one and cleared.
   StaticScene ss;
-  const V2 sensor(0.3, -0.2);
+  const V2 sensor(0.31, -0.18);  // ring points at 0° and 90° not on cell edges
   auto ring = [&](double r) {
     std::vector<V2> pts;
     for (int k = 0; k < 7200; ++k)

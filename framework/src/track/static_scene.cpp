@@ -8,6 +8,7 @@
 #include <mrpt/system/filesystem.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -20,7 +21,7 @@ using mrpt::maps::COccupancyGridMap2D;
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr int kBearingBins = 1440;  // updatePoints: 0.25° of bearing per clearing ray
+constexpr int kBearingBins = 1440;  // updatePoints: a clearing ray per 0.25° of bearing (mean)
 
 // MRPT exception texts span several lines (with a call stack); a ConfigError is one line.
 std::string firstLine(const std::string& s) {
@@ -216,8 +217,11 @@ void StaticScene::update(const Frame& f, const std::vector<Eigen::Vector2d>& peo
     int skip = int(scans_++ % opt_.clear_every);
     clear_to_.clear();
     hits_.clear();
+    const Eigen::Vector2d sensor(sx, sy);
     for (std::size_t i = 0; i < n; ++i) {
-      const double ux = R(0, 0) * c + R(0, 1) * s, uy = R(1, 0) * c + R(1, 1) * s;
+      // Packed 2-vectors throughout: built from two scalars, the points cost a stalled
+      // store-to-load forward each when appended.
+      const Eigen::Vector2d u(R(0, 0) * c + R(0, 1) * s, R(1, 0) * c + R(1, 1) * s);
       const double cn = c * cd - s * sd;
       s = s * cd + c * sd;
       c = cn;
@@ -227,10 +231,10 @@ void StaticScene::update(const Frame& f, const std::vector<Eigen::Vector2d>& peo
       const double r = scan->getScanRange(i);
       if (!(r > 0)) continue;
       const bool in_range = r < opt_.max_range && r < no_return;
-      const double hx = sx + r * ux, hy = sy + r * uy;
-      if (in_range && !nearPerson(hx, hy, people_fixed)) hits_.emplace_back(hx, hy);
+      const Eigen::Vector2d hit = sensor + r * u;
+      if (in_range && !nearPerson(hit.x(), hit.y(), people_fixed)) hits_.push_back(hit);
       const double rc = in_range ? r - opt_.clear_margin : std::min(r, opt_.max_range);
-      if (clear && rc > 0) clear_to_.emplace_back(sx + rc * ux, sy + rc * uy);
+      if (clear && rc > 0) clear_to_.push_back(sensor + rc * u);
     }
     castRays(sx, sy, f.t);
   }
@@ -249,25 +253,30 @@ void StaticScene::updatePoints(double t, const Eigen::Vector2d& sensor_xy_fixed,
   bin_pt_.assign(kBearingBins, 0);
   clear_to_.clear();
   hits_.clear();
+  const double max2 = opt_.max_range * opt_.max_range;
   for (std::size_t k = 0; k < points_fixed.size(); ++k) {
     const double dx = points_fixed[k].x() - sx, dy = points_fixed[k].y() - sy;
-    const double r = std::hypot(dx, dy);
-    if (!(r > 1e-3)) continue;
-    const int b =
-        std::min(kBearingBins - 1, int((std::atan2(dy, dx) + M_PI) * (kBearingBins / (2 * M_PI))));
-    if (r < bin_range_[b]) {
-      bin_range_[b] = float(r);
+    const double r2 = dx * dx + dy * dy;  // squared: no root per point
+    if (!(r2 > 1e-6)) continue;
+    // The "diamond angle", monotonic in bearing, in [0, 4): no atan2 per point, for bins
+    // between 0.18° and 0.35° wide.
+    const double ax = std::abs(dx), ay = std::abs(dy);
+    const double d = dy >= 0 ? (dx >= 0 ? ay / (ax + ay) : 2 - ay / (ax + ay))
+                             : (dx < 0 ? 2 + ay / (ax + ay) : 4 - ay / (ax + ay));
+    const int b = std::min(kBearingBins - 1, int(d * (kBearingBins / 4)));
+    if (r2 < bin_range_[b]) {
+      bin_range_[b] = float(r2);
       bin_pt_[b] = std::uint32_t(k);
     }
-    if (r < opt_.max_range && !nearPerson(points_fixed[k].x(), points_fixed[k].y(), people_fixed))
+    if (r2 < max2 && !nearPerson(points_fixed[k].x(), points_fixed[k].y(), people_fixed))
       hits_.push_back(points_fixed[k]);
   }
   for (int b = 0; b < kBearingBins; ++b) {
     if (!std::isfinite(bin_range_[b])) continue;
-    const double r = bin_range_[b];
+    const auto& p = points_fixed[bin_pt_[b]];
+    const double r = std::hypot(p.x() - sx, p.y() - sy);
     const double rc = r < opt_.max_range ? r - opt_.clear_margin : opt_.max_range;
     if (rc <= 0) continue;
-    const auto& p = points_fixed[bin_pt_[b]];
     clear_to_.emplace_back(sx + (p.x() - sx) * rc / r, sy + (p.y() - sy) * rc / r);
   }
   castRays(sx, sy, t);
@@ -277,8 +286,7 @@ void StaticScene::castRays(double sx, double sy, double t) {
   const double res = opt_.cell, xmin = grid_.getXMin(), ymin = grid_.getYMin();
   const int w = int(grid_.getSizeX()), h = int(grid_.getSizeY());
   const double gx0 = (sx - xmin) / res, gy0 = (sy - ymin) / res;
-  if (!(gx0 >= 0 && gx0 < w && gy0 >= 0 && gy0 < h)) return;  // sensor off the grid
-  const int i0 = int(gx0), j0 = int(gy0);
+  if (!(gx0 >= 0.5 && gx0 < w - 0.5 && gy0 >= 0.5 && gy0 < h - 0.5)) return;  // off the grid
   Cell* const cells = grid_.getRow(0);
   constexpr int kMin = COccupancyGridMap2D::OCCGRID_CELLTYPE_MIN;
   constexpr int kMax = COccupancyGridMap2D::OCCGRID_CELLTYPE_MAX;
@@ -289,35 +297,38 @@ void StaticScene::castRays(double sx, double sy, double t) {
   // persistence clock needs each cell's change to occupied; hence this walk over its cells.
   for (const Eigen::Vector2d& to : clear_to_) {
     double gx1 = (to.x() - xmin) / res, gy1 = (to.y() - ymin) / res;
-    // Clip the far end to the grid (the sensor end is inside).
+    // Clip the far end to the grid less half a cell (the sensor end is inside that too), so
+    // the samples below, within half a cell of the line's ends, stay on the grid.
     double s = 1;
-    const double ex = gx1 - gx0, ey = gy1 - gy0, hi_x = w - 1e-6, hi_y = h - 1e-6;
-    if (gx1 < 0) s = std::min(s, -gx0 / ex);
+    const double ex = gx1 - gx0, ey = gy1 - gy0, hi_x = w - 0.5, hi_y = h - 0.5;
+    if (gx1 < 0.5) s = std::min(s, (0.5 - gx0) / ex);
     if (gx1 > hi_x) s = std::min(s, (hi_x - gx0) / ex);
-    if (gy1 < 0) s = std::min(s, -gy0 / ey);
+    if (gy1 < 0.5) s = std::min(s, (0.5 - gy0) / ey);
     if (gy1 > hi_y) s = std::min(s, (hi_y - gy0) / ey);
-    gx1 = std::clamp(gx0 + s * ex, 0.0, hi_x);
-    gy1 = std::clamp(gy0 + s * ey, 0.0, hi_y);
-    // From cell (i0, j0) to cell (i1, j1), both included, one cell per step of the longer axis
-    // and a step of the shorter one whenever a 0.32 fixed-point fraction (starting at a half)
-    // carries: Bresenham's cells without the branch it mispredicts on every diagonal ray.
-    const int i1 = int(gx1), j1 = int(gy1), di = i1 - i0, dj = j1 - j0;
-    const bool x_major = std::abs(di) >= std::abs(dj);
-    const int n = x_major ? std::abs(di) : std::abs(dj);
-    const long step_x = di >= 0 ? 1 : -1, step_y = dj >= 0 ? long(w) : -long(w);
-    const long major = x_major ? step_x : step_y, minor = x_major ? step_y : step_x;
-    // A diagonal (|minor| = n) would need 2^32: one less still carries on every step.
-    const std::uint32_t inc =
-        n ? std::uint32_t(std::min<std::uint64_t>(
-                (std::uint64_t(std::abs(x_major ? dj : di)) << 32) / n, 0xFFFFFFFFu))
-          : 0;
-    std::uint32_t frac = 0x80000000u;
-    Cell* p = cells + std::size_t(j0) * w + i0;
+    gx1 = std::clamp(gx0 + s * ex, 0.5, hi_x);
+    gy1 = std::clamp(gy0 + s * ey, 0.5, hi_y);
+    // One cell per column (or row) of the longer axis, the one the exact line crosses at the
+    // column's centre; the shorter axis in 32.32 fixed point, stepping by at most one cell.
+    // Bresenham's cells without its mispredicted branch, and from the true sensor position:
+    // lines between cell centres would all share a few slopes and leave cells on diagonals
+    // nearly never crossed.
+    const bool x_major = std::abs(gx1 - gx0) >= std::abs(gy1 - gy0);
+    const double a0 = x_major ? gx0 : gy0, a1 = x_major ? gx1 : gy1;
+    const double b0 = x_major ? gy0 : gx0, b1 = x_major ? gy1 : gx1;
+    const int ia0 = int(a0), ia1 = int(a1), n = std::abs(ia1 - ia0), dir = ia1 >= ia0 ? 1 : -1;
+    const double slope = a1 != a0 ? (b1 - b0) / (a1 - a0) : 0.0;
+    constexpr double kOne = 4294967296.0;  // 2^32
+    std::int64_t fb = std::llround((b0 + (ia0 + 0.5 - a0) * slope) * kOne);
+    const std::int64_t inc = std::llround(dir * slope * kOne);
+    const long major = x_major ? dir : dir * long(w), minor = x_major ? long(w) : 1;
+    int ib = int(fb >> 32);
+    Cell* p = cells + (x_major ? std::size_t(ib) * w + ia0 : std::size_t(ia0) * w + ib);
     for (int k = 0; k <= n; ++k) {
       *p = Cell(std::min(kMax, int(*p) + l_pass_));
-      const std::uint32_t next = frac + inc;
-      p += major + (next < frac ? minor : 0);
-      frac = next;
+      fb += inc;
+      const int nb = int(fb >> 32);
+      p += major + (nb - ib) * minor;
+      ib = nb;
     }
   }
   const float tr = float(t - t0_), persist = float(opt_.persist), max_gap = float(opt_.max_gap);

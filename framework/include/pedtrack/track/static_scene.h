@@ -7,11 +7,12 @@
 // clears the cells it crosses and marks the cell it ends in. A cell is static once its
 // occupancy has been seen over at least `persist` seconds: the span from the first hit of its
 // current occupied run to its latest hit (a run ends when rays clear the cell, or when it goes
-// max_gap without a hit before it is static). A person who stands still while tracked is excluded,
-// so gets no hits, so never becomes static however long they stand; legs that only pass a cell
-// give it a span far below `persist`. An optional prior map (a ROS map_server map or an MRPT
-// grid map) marks its occupied cells static from the start. 2D scans go through update(),
-// any other sensor's obstacle points (a 3D pipeline's, ground removed) through updatePoints().
+// max_gap without a hit before it is static). A person who stands still while tracked is
+// excluded, so gets no hits, so never becomes static however long they stand; legs that only
+// pass a cell give it a span far below `persist`. An optional prior map (a ROS map_server map
+// or an MRPT grid map) marks its occupied cells static from the start. 2D scans go through
+// update(), any other sensor's obstacle points (a 3D pipeline's, ground removed) through
+// updatePoints().
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <Eigen/Core>
@@ -30,9 +31,10 @@ class StaticScene {
     /// Grid cell size (m). 5 cm, as leg_tracker's local grid: a leg is 10-15 cm across, so a
     /// wall 20 cm behind a person does not spill into the person's cell.
     double cell = 0.05;
-    /// Half-width of the local grid around the robot (m): the grid is 2·extent square and is
-    /// re-centred on the robot (cells aligned, contents kept) when the robot moves away from its
-    /// centre, so memory and cost stay fixed however far the robot drives.
+    /// Half-width of the local grid around the robot (m): the grid is 2·extent square (600² cells
+    /// of 1 byte plus 8 bytes of run times each, 3.2 MB) and is re-centred on the robot (cells
+    /// aligned, contents kept) once the max_range disc round it would leave the grid (at most
+    /// every extent/4 of travel), so memory and cost stay fixed however far the robot drives.
     double extent = 15.0;
     /// Rays are used up to this range (m): nearer returns mark their cell, farther ones only
     /// clear the first max_range metres. People are tracked well inside 10 m, and the cost of a
@@ -42,8 +44,8 @@ class StaticScene {
     double occupied = 0.7;
     /// Probability of a hit (a return in the cell) and of a pass (a ray through it), MRPT's
     /// Bayesian log-odds update. One hit makes an unknown cell occupied; a pass undoes a fifth
-    /// of a hit, so a wall cell hit every other scan stays occupied and a cell a person left
-    /// is clear again after a handful of passes.
+    /// of a hit, so a wall cell hit every other scan stays occupied, and a cell a person left
+    /// is clear again after about five passes per hit it got (at most ~20, log-odds saturate).
     double p_hit = 0.85;
     double p_pass = 0.6;
     /// Seconds a cell's occupancy must have been observed (first to latest hit) before it
@@ -95,7 +97,7 @@ class StaticScene {
   /// The same for obstacle points of any sensor (fixed frame, projected to the ground plane,
   /// ground already removed), seen from `sensor_xy_fixed` at time t (s). Every point within
   /// max_range marks its cell unless near a person; space is cleared up to the nearest point
-  /// in each 0.25° of bearing (free space up to the first obstacle, as a 2D scan would see it).
+  /// in each ~0.25° of bearing (free space up to the first obstacle, as a 2D scan would see it).
   void updatePoints(double t, const Eigen::Vector2d& sensor_xy_fixed,
                     const std::vector<Eigen::Vector2d>& points_fixed,
                     const std::vector<Eigen::Vector2d>& people_fixed);
