@@ -35,6 +35,15 @@ struct LegPeopleTracker::Person {
   explicit Person(const LegPoseParams& p) : est(p) {}
 };
 
+namespace {
+template <class V>
+auto findObject(V& objects, long id) -> decltype(objects.front().get()) {
+  for (auto& o : objects)
+    if (o->id == id) return o.get();
+  return nullptr;
+}
+}  // namespace
+
 LegPeopleTracker::LegPeopleTracker(const LegPeopleParams& p) : p_(p), object_model_(p.object_q) {}
 LegPeopleTracker::~LegPeopleTracker() = default;
 
@@ -51,10 +60,9 @@ void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
   }
   for (auto& person : people_) {
     person->est.predict(t);
-    for (auto& o : objects_) {
-      if (o->id == person->left) o->predicted = person->est.predictedLeft();
-      if (o->id == person->right) o->predicted = person->est.predictedRight();
-    }
+    if (Object* o = findObject(objects_, person->left)) o->predicted = person->est.predictedLeft();
+    if (Object* o = findObject(objects_, person->right))
+      o->predicted = person->est.predictedRight();
   }
   associate(t, legs);
   updatePeople(t, legs);
@@ -73,7 +81,6 @@ void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs
     Object& o = *objects_[std::size_t(i)];
     const int j = a.row_to_col[std::size_t(i)];
     if (j < 0) continue;
-    // A person's leg restarts from the detection: its own CV filter lags a swinging leg.
     kalmanUpdate(o.g, m, legs[std::size_t(j)].p);
     o.last_seen = t;
     o.score_sum += legs[std::size_t(j)].score;
@@ -100,15 +107,6 @@ void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs
     objects_.push_back(std::move(o));
   }
 }
-
-namespace {
-template <class V>
-auto findObject(V& objects, long id) -> decltype(objects.front().get()) {
-  for (auto& o : objects)
-    if (o->id == id) return o.get();
-  return nullptr;
-}
-}  // namespace
 
 void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& legs) {
   // Legs' object ids that no longer exist are freed.
