@@ -1,4 +1,6 @@
-// The rosbag source on the real leg_tracker bag, and `pedtrack import` of it to a rawlog.
+// The rosbag source on the real leg_tracker bags, and `pedtrack import` of one to a rawlog; robot
+// poses and mounts from /tf and the INI; several scanners merged into one frame.
+#include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
@@ -9,6 +11,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <iostream>
+#include <tuple>
 
 #include "pedtrack/pipeline.h"
 #include "test_support.h"
@@ -176,4 +179,141 @@ TEST_CASE("robot poses come from interpolated /tf with the sensor mounting or el
   // Without tf: the last odometry message at or before the scan (0.025 s earlier: 2.5 cm behind).
   CHECK(odom_frames[4].robot_pose.x() == Approx(0.5).margin(1e-6));
   CHECK(odom_frames[4].sensor_pose.x() == Approx(0.5).margin(1e-6));
+}
+
+namespace {
+
+// Two scanners on the moving robot of writeMovingRobotBag: `left` placed by /tf_static at
+// (0.2, 0.3, 0.1) facing left, `right` (no tf) 40 ms after it; both at 10 Hz, 10 turns.
+std::string writeTwoScannerBag(const std::string& path) {
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  const double t0 = 1600000000.0;
+  tf2_msgs::TFMessage mount;
+  geometry_msgs::TransformStamped m;
+  m.header.stamp = ros::Time(t0);
+  m.header.frame_id = "base_link";
+  m.child_frame_id = "left";
+  m.transform.translation.x = 0.2;
+  m.transform.translation.y = 0.3;
+  m.transform.translation.z = 0.1;
+  m.transform.rotation.z = std::sin(M_PI / 4);  // yaw 90°
+  m.transform.rotation.w = std::cos(M_PI / 4);
+  mount.transforms.push_back(m);
+  bag.write("/tf_static", ros::Time(t0), mount);
+  for (int k = 0; k <= 24; ++k) {
+    const ros::Time t(t0 + 0.05 * k);
+    tf2_msgs::TFMessage tf;
+    geometry_msgs::TransformStamped p;
+    p.header.stamp = t;
+    p.header.frame_id = "odom";
+    p.child_frame_id = "base_link";
+    p.transform.translation.x = 0.05 * k;
+    p.transform.rotation.w = 1;
+    tf.transforms.push_back(p);
+    bag.write("/tf", t, tf);
+  }
+  for (int k = 1; k <= 10; ++k)
+    for (const auto& [topic, frame, dt] :
+         {std::tuple<std::string, std::string, double>{"/left_scan", "left", 0.01},
+          {"/right_scan", "right", 0.05}}) {
+      sensor_msgs::LaserScan s;
+      s.header.stamp = ros::Time(t0 + 0.1 * k + dt);
+      s.header.frame_id = frame;
+      s.angle_min = -1.5;
+      s.angle_max = 1.5;
+      s.angle_increment = 0.01;
+      s.range_min = 0.1;
+      s.range_max = 10;
+      s.ranges.assign(301, 3.0f);
+      bag.write(topic, s.header.stamp, s);
+    }
+  bag.close();
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("several topics merge into frames with each scanner's mounting pose", "[rosbag]") {
+  const std::string bag = writeTwoScannerBag(freshDir("rosbag_merge") + "/two.bag");
+  const std::string topics = "topic = /left_scan,/right_scan\n";
+  const auto frames = replay("rosbag", bag, topics + "mounts = /right_scan: 0.2 -0.3 0.1 -90\n");
+  REQUIRE(frames.size() == 10);
+  const double t0 = 1600000000.0;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const Frame& f = frames[i];
+    const double tl = 0.1 * (i + 1) + 0.01, tr = tl + 0.04;  // robot x = t - t0 (1 m/s)
+    REQUIRE(f.observations.size() == 2);
+    REQUIRE(f.sensors.size() == 2);
+    CHECK(f.t == Approx(t0 + tr).margin(1e-6));  // the newest stamp
+    CHECK(f.robot_pose.x() == Approx(tr).margin(1e-6));
+    // Left from /tf_static, right from `mounts`, each where the robot was at its own stamp.
+    CHECK(f.sensors[0].label == "/left_scan");
+    CHECK(f.sensors[0].pose.distanceTo(mrpt::poses::CPose3D(tl + 0.2, 0.3, 0.1, M_PI / 2, 0, 0)) <
+          1e-6);
+    CHECK(f.sensors[1].label == "/right_scan");
+    CHECK(f.sensors[1].pose.distanceTo(mrpt::poses::CPose3D(tr + 0.2, -0.3, 0.1, -M_PI / 2, 0, 0)) <
+          1e-6);
+    CHECK(f.sensor_pose.distanceTo(f.sensors[0].pose) < 1e-12);
+    // In the robot frame at t the left scan was taken 4 cm further back.
+    mrpt::poses::CPose3D left_on_robot;
+    f.observations[0]->getSensorPose(left_on_robot);
+    CHECK(left_on_robot.x() == Approx(0.2 - 0.04).margin(1e-6));
+  }
+  // A window shorter than the 40 ms between the scanners, or 0: one message per frame.
+  CHECK(replay("rosbag", bag, topics + "merge_window = 0.03\n").size() == 20);
+  const auto single = replay("rosbag", bag, topics + "merge_window = 0\n");
+  REQUIRE(single.size() == 20);
+  for (std::size_t i = 1; i < single.size(); ++i) {
+    CHECK(single[i].observations.size() == 1);
+    CHECK(single[i].sensors.size() == 1);
+    CHECK(single[i].t >= single[i - 1].t);
+  }
+}
+
+TEST_CASE("a bad mounts entry is named with its key", "[rosbag]") {
+  const std::string bag = writeTwoScannerBag(freshDir("rosbag_mounts") + "/two.bag");
+  const std::string topics = "topic = /left_scan,/right_scan\n";
+  CHECK_THROWS_WITH(replay("rosbag", bag, topics + "mounts = /right_scan: 0.2 -0.3 x 90\n"),
+                    Catch::Contains("[source] mounts: bad entry '/right_scan: 0.2 -0.3 x 90'") &&
+                        Catch::Contains("'x' is not a number"));
+  CHECK_THROWS_WITH(
+      replay("rosbag", bag, topics + "mounts = /right_scan: 1 2 3 4; /rigth_scan 1\n"),
+      Catch::Contains("[source] mounts: bad entry '/rigth_scan 1'"));
+  CHECK_THROWS_WITH(replay("rosbag", bag, topics + "mounts = /right_scan: 1 2 3\n"),
+                    Catch::Contains("3 numbers, not 4 to 6"));
+  CHECK_THROWS_WITH(replay("rosbag", bag, topics + "mounts = /rigth_scan: 1 2 3 4\n"),
+                    Catch::Contains("[source] mounts: topic '/rigth_scan' is not a scan topic") &&
+                        Catch::Contains("did you mean '/right_scan'?"));
+}
+
+TEST_CASE("negative_2.bag's three scanners merge into frames of three observations", "[rosbag]") {
+  const std::string data = sharedDataDir();
+  requireData(data.empty() ? "" : data + "/leg_tracker/negative_2.bag");
+  std::string text = readFile(std::string(PEDTRACK_SOURCE_DIR) + "/configs/negative_2_merged.ini");
+  const std::string var = "${PEDTRACK_DATA}";
+  text.replace(text.find(var), var.size(), data);
+  const auto frames = readAllFrames(text, "negative_2_merged.ini");
+  // 435 left, 435 rear and 434 right scans, always in that order: the last turn lacks its right.
+  REQUIRE(frames.size() == 435);
+  std::size_t full = 0;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const Frame& f = frames[i];
+    if (i > 0) CHECK(f.t >= frames[i - 1].t);
+    if (f.observations.size() != 3) continue;
+    ++full;
+    REQUIRE(f.sensors.size() == 3);
+    CHECK(f.sensors[0].label == "/left_scan");
+    CHECK(f.sensors[1].label == "/rear_scan");
+    CHECK(f.sensors[2].label == "/right_scan");
+    for (std::size_t a = 0; a < 3; ++a)
+      for (std::size_t b = a + 1; b < 3; ++b)
+        CHECK(f.sensors[a].pose.distanceTo(f.sensors[b].pose) > 0.4);
+    CHECK(f.t == Approx(mrpt::Clock::toDouble(f.observations[2]->timestamp)).margin(1e-6));
+  }
+  CHECK(full == 434);
+  // The mounts of the config reached the observations (no /tf, no odometry: robot = fixed).
+  mrpt::poses::CPose3D rear;
+  frames[0].observations[1]->getSensorPose(rear);
+  CHECK(rear.x() == Approx(-0.27).margin(1e-9));
+  CHECK(rear.yaw() == Approx(176.4 * M_PI / 180).margin(1e-9));
 }

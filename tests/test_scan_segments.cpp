@@ -1,5 +1,5 @@
-// 2D segmentation: gaps and missing beams split segments; segment features by hand; leg circles
-// and their pairing.
+// 2D segmentation: gaps and missing beams split segments; segment features by hand; leg circles,
+// their merging across scanners and their pairing.
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include <catch2/catch.hpp>
@@ -127,4 +127,60 @@ TEST_CASE("legs pair closest first within the separation limit", "[legs]") {
   // 0.5 and 0.9 are the closest pair; 0 then has no partner left within 0.8 m.
   CHECK(seg::pairLegs({{0, 0}, {0.5, 0}, {0.9, 0}}, 0.8) == std::vector<int>{-1, 2, 1});
   CHECK(seg::pairLegs({}, 0.8).empty());
+}
+
+namespace {
+
+// The half of a 5 cm leg at c that a sensor at s sees: 9 points on the arc facing it.
+fit::Points2 legArc(const Eigen::Vector2d& c, const Eigen::Vector2d& s) {
+  fit::Points2 pts;
+  const double toward = std::atan2(s.y() - c.y(), s.x() - c.x());
+  for (int i = 0; i < 9; ++i) {
+    const double a = toward - M_PI / 2 + M_PI * i / 8;
+    pts.emplace_back(c.x() + 0.05 * std::cos(a), c.y() + 0.05 * std::sin(a));
+  }
+  return pts;
+}
+
+seg::ScanLeg scanLeg(const Eigen::Vector2d& c, const Eigen::Vector2d& s, std::size_t scan) {
+  seg::ScanLeg l;
+  l.scan = scan;
+  l.points = legArc(c, s);
+  REQUIRE(seg::detectLeg(l.points, s.x(), s.y(), seg::LegParams(), l.leg));
+  return l;
+}
+
+}  // namespace
+
+TEST_CASE("legs of different scans merge into one refitted circle, legs of one scan never",
+          "[legs]") {
+  const Eigen::Vector2d a(0, 0), b(1.5, -1.0);  // two sensors, seeing the leg from two sides
+  const Eigen::Vector2d c1(1.5, 0.2), c2(1.5, 0.32);
+  const std::vector<seg::ScanLeg> legs = {scanLeg(c1, a, 0), scanLeg(c1, b, 1), scanLeg(c2, a, 0),
+                                          scanLeg({3, 3}, b, 1)};
+  const seg::LegParams p;
+  // Leg 2 is 0.12 m from leg 1 (another scan) but shares scan 0 with leg 0, already merged.
+  const auto m = seg::mergeLegs(legs, 0.15, p);
+  REQUIRE(m.size() == 3);
+  CHECK(m[0].members == std::vector<std::size_t>{0, 1});
+  CHECK(m[1].members == std::vector<std::size_t>{2});
+  CHECK(m[2].members == std::vector<std::size_t>{3});
+  CHECK(m[0].leg.circle.x == Approx(c1.x()).margin(1e-9));
+  CHECK(m[0].leg.circle.y == Approx(c1.y()).margin(1e-9));
+  CHECK(m[0].leg.circle.r == Approx(0.05).margin(1e-9));
+  CHECK(m[0].leg.residual < 1e-9);
+  CHECK(m[1].leg.circle.y == Approx(c2.y()).margin(1e-9));  // alone: unchanged
+  // Off: every leg alone.
+  CHECK(seg::mergeLegs(legs, 0, p).size() == 4);
+  CHECK(seg::mergeLegs({}, 0.1, p).empty());
+  // Arcs that do not make one circle (a moving leg seen 4 cm apart): the mean of the centres.
+  const std::vector<seg::ScanLeg> apart = {scanLeg(c1, a, 0),
+                                           scanLeg(c1 + Eigen::Vector2d(0.04, 0), b, 1)};
+  seg::LegParams strict;
+  strict.max_residual = 0.005;
+  const auto mean = seg::mergeLegs(apart, 0.1, strict);
+  REQUIRE(mean.size() == 1);
+  CHECK(mean[0].leg.circle.x == Approx(c1.x() + 0.02).margin(1e-9));
+  CHECK(mean[0].leg.circle.y == Approx(c1.y()).margin(1e-9));
+  CHECK(mean[0].leg.residual > strict.max_residual);
 }

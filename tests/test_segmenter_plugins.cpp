@@ -1,8 +1,11 @@
 // The segmentation plugins on hand-made frames, driven through a pipeline's stages as a run
 // drives them: what each labels, the clusters it makes, and bad points that must not stop it.
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationPointCloud.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -144,4 +147,77 @@ TEST_CASE("scan_segments then leg_circles: two legs found and paired", "[plugins
     CHECK(f.clusters[k].features.back() < 0.005);  // leg_residual
   }
   CHECK(f.cluster_feature_names->back() == "leg_residual");
+}
+
+namespace {
+
+// A 0.25° scan over 180° from a scanner mounted at `mount` on the robot: a 5 cm leg at (2, 0.1)
+// and a wall at x = 4, robot frame.
+mrpt::obs::CObservation2DRangeScan::Ptr scanFrom(const mrpt::poses::CPose3D& mount,
+                                                 const std::string& label) {
+  auto scan = mrpt::obs::CObservation2DRangeScan::Create();
+  const int n = 721;
+  scan->aperture = float(M_PI);
+  scan->rightToLeft = true;
+  scan->maxRange = 30;
+  scan->sensorPose = mount;
+  scan->sensorLabel = label;
+  scan->resizeScan(n);
+  const double lx = 2.0 - mount.x(), ly = 0.1 - mount.y();  // the leg, from the scanner
+  for (int i = 0; i < n; ++i) {
+    const double a = mount.yaw() - scan->aperture / 2 + scan->aperture * i / (n - 1);
+    const double c = std::cos(a), s = std::sin(a);
+    double r = c > 1e-6 ? (4.0 - mount.x()) / c : 1e9;
+    const double b = c * lx + s * ly, disc = b * b - (lx * lx + ly * ly - 0.0025);
+    if (disc >= 0 && b - std::sqrt(disc) > 0) r = std::min(r, b - std::sqrt(disc));
+    scan->setScanRange(i, float(std::min(r, 40.0)));
+    scan->setScanRangeValidity(i, r < scan->maxRange);
+  }
+  return scan;
+}
+
+}  // namespace
+
+TEST_CASE("merging two scanners puts a shared leg at one place", "[plugins][legs]") {
+  // Front-left and front-right scanners of a wheelchair, one sensory frame in a rawlog.
+  const mrpt::poses::CPose3D left(0.8, 0.25, 0.18, M_PI / 4, 0, 0),
+      right(0.8, -0.25, 0.18, -M_PI / 4, 0, 0);
+  const std::string log = freshDir("two_scanners") + "/two.rawlog";
+  {
+    mrpt::obs::CSensoryFrame sf;
+    sf.insert(scanFrom(left, "LEFT"));
+    sf.insert(scanFrom(right, "RIGHT"));
+    mrpt::io::CFileGZOutputStream out(log);
+    mrpt::serialization::archiveFrom(out) << sf;
+  }
+  const auto frames =
+      readAllFrames("[pipeline]\nstages = source\n[source]\nplugin = rawlog\nfile = " + log + "\n");
+  REQUIRE(frames.size() == 1);
+  const Frame& read = frames[0];
+  REQUIRE(read.observations.size() == 2);
+  REQUIRE(read.sensors.size() == 2);
+  CHECK(read.sensors[0].label == "LEFT");
+  CHECK(read.sensors[1].label == "RIGHT");
+  CHECK(read.sensors[0].pose.distanceTo(left) < 1e-6);  // no odometry: robot = fixed frame
+  CHECK(read.sensors[1].pose.distanceTo(right) < 1e-6);
+  CHECK(read.sensor_pose.distanceTo(left) < 1e-6);
+
+  const std::string stages = "[segments]\nplugin = scan_segments\n[legs]\nplugin = leg_circles\n";
+  Frame f = read;
+  Stages("segments legs", stages).run(f);
+  REQUIRE(f.clusters.size() == 1);
+  CHECK(f.clusters[0].cx == Approx(2.0).margin(0.01));
+  CHECK(f.clusters[0].cy == Approx(0.1).margin(0.01));
+  CHECK(f.clusters[0].pair == -1);
+  CHECK(f.clusters[0].features.back() < 0.005);  // leg_residual of the refit on both arcs
+  // Both scans' returns off the leg are in the one cluster.
+  std::size_t from_left = 0;
+  for (std::uint32_t i : f.clusters[0].indices) from_left += i < read.cloudSpans()[1].first;
+  CHECK(from_left > 3);
+  CHECK(f.clusters[0].indices.size() - from_left > 3);
+  // Without merging the one leg is two clusters that pair up as a person.
+  Frame twice = read;
+  Stages("segments legs", stages + "merge_distance = 0\n").run(twice);
+  REQUIRE(twice.clusters.size() == 2);
+  CHECK(twice.clusters[0].pair == 1);
 }

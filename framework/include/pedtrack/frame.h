@@ -83,12 +83,22 @@ struct CloudSpan {
   std::size_t count = 0;        ///< its points
 };
 
+/// A range sensor that contributed to a frame, and where it was.
+struct SensorPose {
+  std::string label;          ///< the observation's sensorLabel (a bag topic, a rawlog label)
+  mrpt::poses::CPose3D pose;  ///< the sensor in the fixed frame, at its observation's time
+};
+
 struct Frame {
   std::size_t index = 0;  ///< 0-based position in the stream
   double t = 0;           ///< observation timestamp, UNIX seconds
   std::vector<mrpt::obs::CObservation::Ptr> observations;
   mrpt::poses::CPose3D robot_pose;   ///< robot (base) in the fixed/odometry frame
   mrpt::poses::CPose3D sensor_pose;  ///< first range sensor in the fixed frame
+  /// Every range sensor that contributed to the frame, one entry per range observation, in
+  /// observation order (several scanners merged into one frame, each with its own pose);
+  /// sensor_pose stays the first one's for the stages that think in one sensor.
+  std::vector<SensorPose> sensors;
   /// The ground under the robot, set by a ground stage (valid = false until one ran).
   GroundPlane ground;
   /// One label per point of cloud(), or empty while no stage has removed anything (every point

@@ -1,13 +1,15 @@
 // `leg_circles`: P3 §2.2 leg detection. Each segment of a 2D segmenter (scan_segments) gets the
 // bounded circle fit of P3 eq. 1; circular ones become the frame's clusters (centre = the
-// circle's), with the segment's features plus `leg_radius` and `leg_residual`, and legs are
-// paired into person candidates (Cluster::pair).
+// circle's), with the segment's features plus `leg_radius` and `leg_residual`; a leg that
+// several scanners of the frame saw becomes one cluster (seg::mergeLegs), and legs are paired
+// into person candidates (Cluster::pair).
 #include "pedtrack/seg/leg_circles.h"
 
 #include <algorithm>
 
 #include "pedtrack/errors.h"
 #include "pedtrack/plugin.h"
+#include "pedtrack/seg/cluster_features.h"
 #include "pedtrack/seg/scan_segments.h"
 
 namespace pedtrack::legcircles {
@@ -16,7 +18,8 @@ namespace {
 class LegCircles : public Segmenter {
  public:
   explicit LegCircles(const PluginContext& ctx)
-      : pair_distance_(ctx.params.getDouble("pair_distance")) {
+      : pair_distance_(ctx.params.getDouble("pair_distance")),
+        merge_distance_(ctx.params.getDouble("merge_distance")) {
     p_.r_min = ctx.params.getDouble("min_radius");
     p_.r_max = ctx.params.getDouble("max_radius");
     p_.max_residual = ctx.params.getDouble("max_residual");
@@ -33,7 +36,7 @@ class LegCircles : public Segmenter {
     const auto& ys = c.getPointsBufferRef_y();
     const std::vector<seg::ScanRun> runs = seg::scanRuns(f, false);
     std::vector<Cluster> legs;
-    std::vector<Eigen::Vector2d> centres;
+    std::vector<seg::ScanLeg> found;
     legs.reserve(f.clusters.size());
     fit::Points2 pts;
     for (Cluster& cl : f.clusters) {
@@ -54,9 +57,12 @@ class LegCircles : public Segmenter {
       cl.cy = leg.circle.y;
       cl.features.push_back(leg.circle.r);
       cl.features.push_back(leg.residual);
-      centres.emplace_back(leg.circle.x, leg.circle.y);
+      found.push_back({leg, std::size_t(run - runs.begin()), pts});
       legs.push_back(std::move(cl));
     }
+    if (runs.size() > 1 && merge_distance_ > 0) legs = merged(std::move(legs), found, c);
+    std::vector<Eigen::Vector2d> centres;
+    for (const Cluster& cl : legs) centres.emplace_back(cl.cx, cl.cy);
     const std::vector<int> partner = seg::pairLegs(centres, pair_distance_);
     for (std::size_t i = 0; i < legs.size(); ++i) legs[i].pair = partner[i];
     f.clusters = std::move(legs);
@@ -64,6 +70,33 @@ class LegCircles : public Segmenter {
   }
 
  private:
+  // One cluster per merged leg: the members' points together, the largest member's segment
+  // features (one scan's view of the leg, as the classifiers were trained on), the merged circle.
+  std::vector<Cluster> merged(std::vector<Cluster> legs, const std::vector<seg::ScanLeg>& found,
+                              const mrpt::maps::CSimplePointsMap& cloud) const {
+    std::vector<Cluster> out;
+    for (const seg::MergedLeg& m : seg::mergeLegs(found, merge_distance_, p_)) {
+      if (m.members.size() == 1) {
+        out.push_back(std::move(legs[m.members[0]]));
+        continue;
+      }
+      std::size_t largest = m.members[0];
+      for (std::size_t i : m.members)
+        if (legs[i].indices.size() > legs[largest].indices.size()) largest = i;
+      Cluster cl;
+      for (std::size_t i : m.members)
+        cl.indices.insert(cl.indices.end(), legs[i].indices.begin(), legs[i].indices.end());
+      seg::setCentroidAndExtent(cl, cloud);
+      cl.cx = m.leg.circle.x;
+      cl.cy = m.leg.circle.y;
+      cl.features = std::move(legs[largest].features);
+      cl.features[cl.features.size() - 2] = m.leg.circle.r;
+      cl.features.back() = m.leg.residual;
+      out.push_back(std::move(cl));
+    }
+    return out;
+  }
+
   // The segmenter's feature names plus ours, made once per distinct list.
   std::shared_ptr<const std::vector<std::string>> names(
       const std::shared_ptr<const std::vector<std::string>>& upstream) {
@@ -78,7 +111,7 @@ class LegCircles : public Segmenter {
   }
 
   seg::LegParams p_;
-  double pair_distance_;
+  double pair_distance_, merge_distance_;
   std::shared_ptr<const std::vector<std::string>> upstream_, names_;
 };
 
@@ -99,6 +132,9 @@ PluginDescriptor describe() {
                          "(concave toward it); P3 has no such test"),
       ParamSpec::real("pair_distance", 0.8, "m", 0, 10,
                       "two legs whose centres are at most this far apart may pair into a person"),
+      ParamSpec::real("merge_distance", 0.1, "m", 0, 1,
+                      "legs of different scans (several scanners) whose centres are closer than "
+                      "this are one leg, refitted on all their points; 0: never merged"),
   };
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<LegCircles>(ctx);

@@ -69,6 +69,7 @@ class MrptSensorSource : public Sensor {
     frame.observations.push_back(obs);
     frame.t = mrpt::Clock::toDouble(obs->timestamp);
     obs->getSensorPose(frame.sensor_pose);  // no odometry from a lone sensor: robot = fixed frame
+    frame.sensors.push_back({obs->sensorLabel, frame.sensor_pose});
     return true;
   }
 

@@ -54,9 +54,12 @@ class RawlogSource : public Sensor {
       const CObservation& first = *frame.observations.front();
       frame.t = mrpt::Clock::toDouble(first.timestamp);
       frame.robot_pose = odometry_;
-      mrpt::poses::CPose3D mount;
-      first.getSensorPose(mount);
-      frame.sensor_pose = odometry_ + mount;
+      for (const auto& o : frame.observations) {
+        mrpt::poses::CPose3D mount;
+        o->getSensorPose(mount);
+        frame.sensors.push_back({o->sensorLabel, odometry_ + mount});
+      }
+      frame.sensor_pose = frame.sensors.front().pose;
       if (realtime_) pacer_.wait(frame.t);
       return true;
     }

@@ -8,7 +8,13 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <sstream>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/text.h"
 
 namespace pedtrack::rosbag_source {
 namespace {
@@ -22,9 +28,45 @@ mrpt::poses::CPose3D toPose(const geometry_msgs::TransformStamped& t) {
 
 }  // namespace
 
+MountTable parseMounts(const std::string& text, const std::string& where) {
+  MountTable out;
+  std::istringstream in(text);
+  std::string entry;
+  while (std::getline(in, entry, ';')) {
+    entry = trim(entry);
+    if (entry.empty()) continue;
+    const auto bad = [&](const std::string& why) {
+      return ConfigError(where + ": bad entry '" + entry + "': " + why +
+                         " (expected 'topic: x y z yaw_deg [pitch_deg [roll_deg]]')");
+    };
+    const auto colon = entry.find(':');
+    if (colon == std::string::npos) throw bad("no ':' after the topic");
+    const std::string topic = trim(entry.substr(0, colon));
+    if (topic.empty()) throw bad("no topic");
+    std::vector<double> v;
+    for (const auto& tok : splitList(entry.substr(colon + 1))) {
+      char* end = nullptr;
+      const double x = std::strtod(tok.c_str(), &end);
+      if (end == tok.c_str() || *end || !std::isfinite(x))
+        throw bad("'" + tok + "' is not a number");
+      v.push_back(x);
+    }
+    if (v.size() < 4 || v.size() > 6) throw bad(std::to_string(v.size()) + " numbers, not 4 to 6");
+    v.resize(6, 0.0);
+    if (!out.emplace(topic, mrpt::poses::CPose3D(v[0], v[1], v[2], v[3] * M_PI / 180,
+                                                 v[4] * M_PI / 180, v[5] * M_PI / 180))
+             .second)
+      throw ConfigError(where + ": topic '" + topic + "' is given twice");
+  }
+  return out;
+}
+
 BagPoses::BagPoses(const rosbag::Bag& bag, std::string fixed_frame, std::string base_frame,
-                   const std::string& odom_topic)
-    : fixed_(std::move(fixed_frame)), base_(std::move(base_frame)) {
+                   const std::string& odom_topic, MountTable mounts, bool warn_unmounted)
+    : fixed_(std::move(fixed_frame)),
+      base_(std::move(base_frame)),
+      mounts_(std::move(mounts)),
+      warn_unmounted_(warn_unmounted) {
   rosbag::View all(bag);
   // Keep the whole bag's history: scans are looked up at their own stamps.
   const double span = std::max(1.0, (all.getEndTime() - all.getBeginTime()).toSec() + 10.0);
@@ -76,15 +118,24 @@ void BagPoses::warnOnce(const std::string& msg) {
   std::cerr << "warning: " << msg << "\n";
 }
 
-void BagPoses::lookup(const std::string& sensor_frame, const ros::Time& stamp,
-                      mrpt::poses::CPose3D& robot, mrpt::poses::CPose3D& mount) {
+void BagPoses::lookup(const std::string& sensor_frame, const std::string& topic,
+                      const ros::Time& stamp, mrpt::poses::CPose3D& robot,
+                      mrpt::poses::CPose3D& mount) {
   std::string base = base_;
   // Mounting transforms are static in practice: accept the latest when the stamp misses.
-  if (!tryTf(base_, sensor_frame, stamp, mount) &&
-      !tryTf(base_, sensor_frame, ros::Time(0), mount)) {
+  const bool from_tf =
+      tryTf(base_, sensor_frame, stamp, mount) || tryTf(base_, sensor_frame, ros::Time(0), mount);
+  const auto ini = mounts_.find(topic);
+  if (!from_tf && ini != mounts_.end()) {
+    mount = ini->second;  // relative to the robot body: the robot pose is still fixed ← base
+  } else if (!from_tf) {
     mount = mrpt::poses::CPose3D();
     base = sensor_frame;
-    if (tf_count_ > 0 && sensor_frame != base_)
+    if (warn_unmounted_)
+      warnOnce("topic '" + topic + "': neither /tf ('" + base_ + "' to '" + sensor_frame +
+               "') nor `mounts` places the sensor on the robot: its mount is taken as the "
+               "identity");
+    else if (tf_count_ > 0 && sensor_frame != base_)
       warnOnce("no tf from '" + base_ + "' to sensor frame '" + sensor_frame +
                "': the sensor frame is taken as the robot frame");
   }

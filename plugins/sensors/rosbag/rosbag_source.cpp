@@ -1,6 +1,8 @@
 // `rosbag`: replays sensor_msgs/LaserScan (→ CObservation2DRangeScan) and sensor_msgs/PointCloud2
 // (→ CObservationPointCloud) from a ROS1 bag through rosbag_storage and mrpt::ros1bridge, with
-// robot poses from /tf and odometry. Observation time = message header stamp.
+// robot poses from /tf and odometry. Observation time = message header stamp. Several topics
+// (scanners on one robot) are merged: consecutive messages of distinct topics within
+// `merge_window` make one frame, each observation with its own mounting pose.
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationPointCloud.h>
@@ -14,7 +16,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <limits>
 #include <memory>
+#include <optional>
 
 #include "bag_poses.h"
 #include "pedtrack/errors.h"
@@ -30,16 +35,26 @@ const std::string kPointCloud2 = "sensor_msgs/PointCloud2";
 
 class RosbagSource : public Sensor {
  public:
-  explicit RosbagSource(const PluginContext& ctx) : file_(ctx.params.getString("file")) {
+  explicit RosbagSource(const PluginContext& ctx)
+      : file_(ctx.params.getString("file")), merge_window_(ctx.params.getDouble("merge_window")) {
     try {
       bag_.open(file_, rosbag::bagmode::Read);
     } catch (const std::exception& e) {
       throw ConfigError("file: cannot open bag '" + file_ + "': " + oneLine(e.what()));
     }
     const std::vector<std::string> topics = chooseTopics(ctx.params.getList("topic"));
-    poses_ = std::make_unique<BagPoses>(bag_, ctx.params.getString("fixed_frame"),
-                                        ctx.params.getString("base_frame"),
-                                        ctx.params.getString("odom_topic"));
+    MountTable mounts = parseMounts(ctx.params.getString("mounts"), ctx.params.where("mounts"));
+    for (const auto& [topic, pose] : mounts) {
+      if (std::find(usable_.begin(), usable_.end(), topic) != usable_.end()) continue;
+      const std::string hint = closestMatch(topic, usable_);
+      throw ConfigError(ctx.params.where("mounts") + ": topic '" + topic +
+                        "' is not a scan topic of bag '" + file_ + "'" +
+                        (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    // One scanner's own frame is a fine robot frame; several need their mounts to line up.
+    poses_ = std::make_unique<BagPoses>(
+        bag_, ctx.params.getString("fixed_frame"), ctx.params.getString("base_frame"),
+        ctx.params.getString("odom_topic"), std::move(mounts), topics.size() > 1);
     realtime_ = ctx.params.getString("rate") == "realtime";
     view_ = std::make_unique<rosbag::View>(bag_, rosbag::TopicQuery(topics));
     total_ = view_->size();
@@ -47,20 +62,81 @@ class RosbagSource : public Sensor {
   }
 
   bool next(Frame& frame) override {
+    // A group: consecutive messages (bag order) while no topic repeats and their stamps span at
+    // most merge_window; the first message that does not fit waits for the next frame.
+    std::vector<Message> group;
+    double lo = 0, hi = 0;
+    for (;;) {
+      if (!pending_) pending_ = read();
+      if (!pending_) break;
+      const Message& m = *pending_;
+      if (!group.empty()) {
+        const bool repeats = std::any_of(group.begin(), group.end(),
+                                         [&](const Message& g) { return g.topic == m.topic; });
+        if (merge_window_ <= 0 || repeats ||
+            std::max(hi, m.stamp) - std::min(lo, m.stamp) > merge_window_)
+          break;
+      }
+      lo = group.empty() ? m.stamp : std::min(lo, m.stamp);
+      hi = group.empty() ? m.stamp : std::max(hi, m.stamp);
+      group.push_back(std::move(*pending_));
+      pending_.reset();
+    }
+    if (group.empty()) return false;
+    // The frame is the robot at the newest stamp. Each observation's sensorPose places its
+    // scanner relative to that robot pose (its mount, composed with the robot's motion since its
+    // own stamp when the bag has poses), so the merged cloud is one consistent robot frame.
+    const Message& newest =
+        *std::max_element(group.begin(), group.end(),
+                          [](const Message& a, const Message& b) { return a.stamp < b.stamp; });
+    frame.robot_pose = newest.robot;
+    for (const Message& m : group) {
+      const mrpt::poses::CPose3D in_fixed = m.robot + m.mount;
+      m.obs->setSensorPose(&m == &newest ? m.mount : in_fixed - frame.robot_pose);
+      frame.observations.push_back(m.obs);
+      frame.sensors.push_back({m.topic, in_fixed});
+    }
+    frame.sensor_pose = frame.sensors.front().pose;
+    // Stages divide by the time step: frame times never go back, even where stamps do.
+    if (newest.stamp < last_t_ && !warned_back_) {
+      warned_back_ = true;
+      std::cerr << "warning: " << file_ << ": header stamps go back in bag order (message "
+                << consumed_ << "); frame times are held at the newest so far\n";
+    }
+    last_t_ = std::max(last_t_, newest.stamp);
+    frame.t = last_t_;
+    if (realtime_) pacer_.wait(frame.t);
+    return true;
+  }
+
+  double progress() const override { return total_ ? static_cast<double>(consumed_) / total_ : -1; }
+
+ private:
+  // One scan or cloud message, converted, with the poses it was taken at.
+  struct Message {
+    mrpt::obs::CObservation::Ptr obs;
+    std::string topic;
+    double stamp = 0;
+    mrpt::poses::CPose3D robot, mount;
+  };
+
+  // The next scan or cloud message of the view, or nothing at its end.
+  std::optional<Message> read() {
     for (; it_ != view_->end(); ++it_) {
       const rosbag::MessageInstance& m = *it_;
       ++consumed_;
-      mrpt::obs::CObservation::Ptr obs;
+      Message out;
+      out.topic = m.getTopic();
       std::string sensor_frame;
       ros::Time stamp;
       if (auto scan = m.instantiate<sensor_msgs::LaserScan>()) {
         sensor_frame = scan->header.frame_id;
         stamp = scan->header.stamp;
-        poses_->lookup(sensor_frame, stamp, frame.robot_pose, mount_);
+        poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
         auto o = mrpt::obs::CObservation2DRangeScan::Create();
-        if (!mrpt::ros1bridge::fromROS(*scan, mount_, *o))
+        if (!mrpt::ros1bridge::fromROS(*scan, out.mount, *o))
           throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " +
-                          m.getTopic() + ": LaserScan could not be converted");
+                          out.topic + ": LaserScan could not be converted");
         // mrpt::ros1bridge drops returns beyond 95% of range_max; ROS defines a return as valid
         // anywhere in [range_min, range_max], and a person at 5.4 m of a 5.6 m scanner is real.
         for (std::size_t k = 0; k < scan->ranges.size(); ++k) {
@@ -68,37 +144,31 @@ class RosbagSource : public Sensor {
           o->setScanRangeValidity(k,
                                   std::isfinite(r) && r >= scan->range_min && r <= scan->range_max);
         }
-        obs = o;
+        out.obs = o;
       } else if (auto cloud = m.instantiate<sensor_msgs::PointCloud2>()) {
         sensor_frame = cloud->header.frame_id;
         stamp = cloud->header.stamp;
-        poses_->lookup(sensor_frame, stamp, frame.robot_pose, mount_);
+        poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
         auto o = mrpt::obs::CObservationPointCloud::Create();
         auto pts = mrpt::maps::CSimplePointsMap::Create();
         if (!mrpt::ros1bridge::fromROS(*cloud, *pts))
           throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " +
-                          m.getTopic() + ": PointCloud2 has no x,y,z fields");
+                          out.topic + ": PointCloud2 has no x,y,z fields");
         o->pointcloud = pts;
-        o->sensorPose = mount_;
-        obs = o;
+        o->sensorPose = out.mount;
+        out.obs = o;
       } else {
         continue;
       }
-      obs->timestamp = mrpt::ros1bridge::fromROS(stamp);
-      obs->sensorLabel = m.getTopic();
-      frame.observations.push_back(obs);
-      frame.t = stamp.toSec();
-      frame.sensor_pose = frame.robot_pose + mount_;
-      if (realtime_) pacer_.wait(frame.t);
+      out.obs->timestamp = mrpt::ros1bridge::fromROS(stamp);
+      out.obs->sensorLabel = out.topic;
+      out.stamp = stamp.toSec();
       ++it_;
-      return true;
+      return out;
     }
-    return false;
+    return std::nullopt;
   }
 
-  double progress() const override { return total_ ? static_cast<double>(consumed_) / total_ : -1; }
-
- private:
   // The requested topics, checked against the bag; or the bag's only scan/cloud topic.
   std::vector<std::string> chooseTopics(const std::vector<std::string>& requested) {
     rosbag::View all(bag_);
@@ -109,6 +179,7 @@ class RosbagSource : public Sensor {
           std::find(usable.begin(), usable.end(), c->topic) == usable.end())
         usable.push_back(c->topic);
     }
+    usable_ = usable;
     std::string listing;
     for (const auto& t : usable) listing += (listing.empty() ? "" : ", ") + t;
     if (requested.empty()) {
@@ -132,6 +203,8 @@ class RosbagSource : public Sensor {
   }
 
   std::string file_;
+  double merge_window_;
+  std::vector<std::string> usable_;  // the bag's LaserScan / PointCloud2 topics
   rosbag::Bag bag_;
   std::unique_ptr<BagPoses> poses_;
   std::unique_ptr<rosbag::View> view_;
@@ -139,7 +212,9 @@ class RosbagSource : public Sensor {
   std::size_t total_ = 0, consumed_ = 0;
   bool realtime_ = false;
   ReplayPacer pacer_;
-  mrpt::poses::CPose3D mount_;
+  std::optional<Message> pending_;  // read, but did not fit the last frame
+  double last_t_ = -std::numeric_limits<double>::infinity();
+  bool warned_back_ = false;
 };
 
 PluginDescriptor describe() {
@@ -150,7 +225,8 @@ PluginDescriptor describe() {
       ParamSpec::inputFile("file", "the .bag to replay"),
       ParamSpec::text(
           "topic", std::string(),
-          "topics to replay (comma list); empty: the bag's only LaserScan/PointCloud2 topic"),
+          "topics to replay (comma list; several are merged, see merge_window); empty: the "
+          "bag's only LaserScan/PointCloud2 topic"),
       ParamSpec::text("fixed_frame", std::string("odom"),
                       "tf frame tracking happens in (odom, map, ...)"),
       ParamSpec::text("base_frame", std::string("base_link"), "tf frame of the robot body"),
@@ -159,6 +235,14 @@ PluginDescriptor describe() {
           "nav_msgs/Odometry topic used when tf has no fixed_frame→base_frame link; empty: none"),
       ParamSpec::choice("rate", "max", {"max", "realtime"},
                         "max: as fast as the pipeline runs; realtime: paced by the header stamps"),
+      ParamSpec::real("merge_window", 0.1, "s", 0, 10,
+                      "several topics: consecutive messages of distinct topics whose stamps span "
+                      "at most this make one frame (below one scan period: 0.1 for 10 Hz "
+                      "scanners); 0: one message per frame"),
+      ParamSpec::text("mounts", std::string(),
+                      "mounting poses on base_frame of topics /tf does not place: 'topic: x y z "
+                      "yaw_deg [pitch_deg [roll_deg]]' (m, deg), entries separated by ';' written "
+                      "right after a number (' ;' starts an INI comment)"),
   };
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<RosbagSource>(ctx);

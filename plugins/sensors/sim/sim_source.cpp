@@ -55,6 +55,7 @@ class SimSource : public Sensor {
     // The scan (the odometry observation's content is the robot pose itself).
     frame.observations.push_back(f.observations.back());
     frame.sensor_pose = f.robot_odometry + sim_.scenario().sensor.mount;
+    frame.sensors.push_back({frame.observations.back()->sensorLabel, frame.sensor_pose});
     if (truth_) truth_->write(f);
     if (point_truth_out_) point_truth_out_->write(sim::pointTruth(f));
     done_ = f.index + 1;
