@@ -68,6 +68,21 @@ TEST_CASE("height_band keeps a height band and a sector of ranges", "[plugins][b
   CHECK(f.point_labels == want);
 }
 
+TEST_CASE("height_band removes the robot's footprint", "[plugins][band]") {
+  Stages s("band",
+           "[band]\nplugin = height_band\nmin_height = -10\nmax_height = 10\n"
+           "footprint = -0.3 1.0 -0.36 0.36\n");
+  Frame f = cloudFrame({{0.9, 0.1, 0.2},    // the user's feet between the front scanners
+                        {-0.2, -0.3, 0.2},  // the chair's frame
+                        {1.1, 0.1, 0.2},    // just ahead of the footprint: kept
+                        {0.2, 0.5, 0.2}});  // beside it: kept
+  s.run(f);
+  CHECK(f.point_labels == std::vector<PointLabel>{PointLabel::Removed, PointLabel::Removed,
+                                                  PointLabel::Kept, PointLabel::Kept});
+  CHECK_THROWS_WITH(Stages("band", "[band]\nplugin = height_band\nfootprint = 1 0 0 1\n"),
+                    Catch::Contains("footprint"));
+}
+
 TEST_CASE("irls_ground then voxel_ccl: ground labelled, two people, P2 features", "[plugins]") {
   Stages s("ground clusters",
            "[ground]\nplugin = irls_ground\n[clusters]\nplugin = voxel_ccl\nvoxel = 0.15\n"

@@ -19,6 +19,7 @@ struct LegPeopleTracker::Object {
   int det = -1;  // this scan's detection, -1 none
   Eigen::Vector2d predicted = Eigen::Vector2d::Zero();
   double meanScore() const { return detections ? score_sum / detections : 0; }
+  double speed() const { return g.x.segment<2>(2).norm(); }
   Eigen::Vector2d pos() const { return g.x.head<2>(); }
 };
 
@@ -44,6 +45,14 @@ auto findObject(V& objects, long id) -> decltype(objects.front().get()) {
 }
 }  // namespace
 
+// Leg-like: the classifier says so on average, or the object walks (moves at init_speed or more)
+// and the classifier does not rule it out. Far legs (few points) and legs unlike the training set
+// score low although they move like legs; clutter that stands still never qualifies this way.
+bool LegPeopleTracker::legLike(const Object& o) const {
+  return o.meanScore() >= p_.leg_score ||
+         (o.speed() >= p_.init_speed && o.meanScore() >= p_.moving_leg_score);
+}
+
 LegPeopleTracker::LegPeopleTracker(const LegPeopleParams& p) : p_(p), object_model_(p.object_q) {}
 LegPeopleTracker::~LegPeopleTracker() = default;
 
@@ -65,7 +74,7 @@ void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
       o->predicted = person->est.predictedRight();
   }
   associate(t, legs);
-  updatePeople(t, legs);
+  updatePeople(t, legs, is_static);
   formPeople(t, legs, is_static);
 }
 
@@ -108,7 +117,8 @@ void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs
   }
 }
 
-void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& legs) {
+void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& legs,
+                                    const std::function<bool(double, double)>& is_static) {
   // Legs' object ids that no longer exist are freed.
   for (auto& person : people_) {
     if (!findObject(objects_, person->left)) person->left = -1;
@@ -133,13 +143,19 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       Object* best = nullptr;
       double bd = p_.pose.leg_gate;
       for (auto& o : objects_) {
-        if (o->person >= 0 || o->det < 0 || o->meanScore() < p_.leg_score) continue;
+        if (o->person >= 0 || o->det < 0 || !legLike(*o)) continue;
+        // A door jamb or table leg next to a passing person must not become their leg: once
+        // adopted it would hold the track on the furniture after the person left.
+        if (is_static && is_static(o->pos().x(), o->pos().y())) continue;
         const double d = (o->pos() - want).norm();
         if (d < bd) bd = d, best = o.get();
       }
       if (!best) continue;
       best->person = P.id;
       slot = best->id;
+      // A tentative person proves itself by walking on its own legs: one that hops from object to
+      // object (a cluster of chair and table legs) starts its travel over with each new leg.
+      if (!P.confirmed) P.origin = {P.est.x(), P.est.y()}, P.travelled = 0;
       (side == 0 ? l : r) = {true, best->pos()};
     }
     P.seen = l.seen || r.seen;
@@ -159,9 +175,12 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       }
     P.est.update(l, r, sensor);
     const Eigen::Vector2d c(P.est.x(), P.est.y());
-    P.travelled = std::max(P.travelled, (c - P.origin).norm());
-    if (!P.confirmed && P.travelled >= p_.confirm_travel &&
-        P.score_sum / std::max(1, P.score_n) >= p_.leg_score)
+    // Travel counts only where a leg was seen: a coasting filter that extrapolates a jump (a leg
+    // re-associated to clutter) would otherwise confirm a ghost without any measurement.
+    if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
+    if (!P.confirmed && P.seen && P.travelled >= p_.confirm_travel &&
+        (P.score_sum / std::max(1, P.score_n) >= p_.leg_score ||
+         P.travelled >= p_.moving_confirm_travel))
       P.confirmed = true;
     // Walking backwards fast for long is a facing chosen wrong at the start.
     const Eigen::Vector2d v = P.est.velocity();
@@ -181,6 +200,14 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       (far == lo ? P.left : P.right) = -1;
     }
   }
+  // A tentative person on the static scene (a start-up pair of furniture legs, before the grid
+  // knew them) is deleted: no person starts there. Confirmed people stay, however long they
+  // stand still.
+  if (is_static)
+    for (auto& person : people_)
+      if (!person->confirmed && is_static(person->est.left().x(), person->est.left().y()) &&
+          is_static(person->est.right().x(), person->est.right().y()))
+        person->last_seen = -INFINITY;
   // Deleted people free their legs.
   for (auto& person : people_) {
     if (t - person->last_seen <= p_.max_coast) continue;
@@ -199,7 +226,7 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
   // Free, leg-like objects seen this scan, paired closest first.
   std::vector<Object*> free;
   for (auto& o : objects_)
-    if (o->person < 0 && o->det >= 0 && o->meanScore() >= p_.leg_score) free.push_back(o.get());
+    if (o->person < 0 && o->det >= 0 && legLike(*o)) free.push_back(o.get());
   std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < free.size(); ++i)
     for (std::size_t j = i + 1; j < free.size(); ++j) {
@@ -266,6 +293,9 @@ std::vector<PersonState> LegPeopleTracker::people() const {
 std::vector<Eigen::Vector2d> LegPeopleTracker::occupiedByPeople() const {
   std::vector<Eigen::Vector2d> out;
   for (const auto& q : people_) {
+    // Tentative people are not kept out: a pair of table legs taken for a person at start-up
+    // must still become static scene, which then deletes it (see updatePeople).
+    if (!q->confirmed) continue;
     out.emplace_back(q->est.x(), q->est.y());
     out.push_back(q->est.left());
     out.push_back(q->est.right());

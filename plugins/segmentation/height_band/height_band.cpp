@@ -2,6 +2,7 @@
 // legs below 0.6 m) and in a region of interest around the sensor; the rest are removed.
 #include <cmath>
 
+#include "pedtrack/errors.h"
 #include "pedtrack/plugin.h"
 
 namespace pedtrack::heightband {
@@ -17,7 +18,12 @@ class HeightBand : public Segmenter {
         min_r_(ctx.params.getDouble("min_range")),
         max_r_(ctx.params.getDouble("max_range")),
         half_fov_(0.5 * ctx.params.getDouble("fov") * kDeg),
-        heading_(ctx.params.getDouble("heading") * kDeg) {}
+        heading_(ctx.params.getDouble("heading") * kDeg),
+        footprint_(ctx.params.getVector("footprint")) {
+    if (footprint_[0] > footprint_[1] || footprint_[2] > footprint_[3])
+      throw ConfigError(ctx.params.where("footprint") +
+                        ": expected x_min x_max y_min y_max with x_min <= x_max, y_min <= y_max");
+  }
 
   void process(Frame& f) override {
     const auto& c = f.cloud();
@@ -35,6 +41,9 @@ class HeightBand : public Segmenter {
       const double h = g.heightOrZ(xs[i], ys[i], zs[i]);
       const double dx = xs[i] - sx, dy = ys[i] - sy, r = std::hypot(dx, dy);
       bool keep = h >= min_h_ && h <= max_h_ && r >= min_r_ && (max_r_ <= 0 || r <= max_r_);
+      if (keep && xs[i] > footprint_[0] && xs[i] < footprint_[1] && ys[i] > footprint_[2] &&
+          ys[i] < footprint_[3])
+        keep = false;
       if (keep && sector)
         keep = std::abs(std::remainder(std::atan2(dy, dx) - axis, 2 * M_PI)) <= half_fov_;
       if (!keep) labels[i] = PointLabel::Removed;
@@ -43,6 +52,7 @@ class HeightBand : public Segmenter {
 
  private:
   double min_h_, max_h_, min_r_, max_r_, half_fov_, heading_;
+  std::vector<double> footprint_;  // robot-frame box whose points are the robot itself
 };
 
 PluginDescriptor describe() {
@@ -61,6 +71,10 @@ PluginDescriptor describe() {
       ParamSpec::real("fov", 360, "deg", 0, 360, "width of the kept sector around `heading`"),
       ParamSpec::real("heading", 0, "deg", -360, 360,
                       "centre of the kept sector, from the sensor's forward axis (+ = left)"),
+      ParamSpec::vector("footprint", std::vector<double>{0, 0, 0, 0}, "m", 4, -100, 100,
+                        "x_min x_max y_min y_max of a robot-frame box whose points are removed: "
+                        "the robot's own body and what it carries (a wheelchair user's legs), "
+                        "which move with the robot; an empty box (the default) removes nothing"),
   };
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<HeightBand>(ctx);

@@ -13,6 +13,7 @@
 #include "pedtrack/track/gait_fit_ipopt.h"
 #include "pedtrack/track/leg_people_tracker.h"
 #include "pedtrack/track/leg_pose_params.h"
+#include "pedtrack/track/scan_odometry.h"
 #include "pedtrack/track/static_scene.h"
 
 namespace pedtrack::legpeople {
@@ -29,6 +30,8 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.gate = s.getDouble("gate");
   p.object_max_coast = s.getDouble("object_max_coast");
   p.leg_score = s.getDouble("leg_score");
+  p.moving_leg_score = s.getDouble("moving_leg_score");
+  p.moving_confirm_travel = s.getDouble("moving_confirm_travel");
   p.pair_distance = s.getDouble("pair_distance");
   p.confirm_travel = s.getDouble("confirm_travel");
   p.max_coast = s.getDouble("max_coast");
@@ -45,7 +48,8 @@ class LegPeople : public Tracker {
       : tracker_(readParams(ctx.params)),
         report_tentative_(ctx.params.getBool("report_tentative")),
         follow_(ctx.params.getString("follow")),
-        follow_zone_(ctx.params.getVector("follow_zone")) {
+        follow_zone_(ctx.params.getVector("follow_zone")),
+        static_radius_(ctx.params.getDouble("static_radius")) {
     if (ctx.params.getBool("static_scene")) {
       StaticScene::Options o;
       o.persist = ctx.params.getDouble("static_persist");
@@ -53,6 +57,7 @@ class LegPeople : public Tracker {
       o.cell = ctx.params.getDouble("static_cell");
       scene_.emplace(o);
     }
+    if (ctx.params.getBool("scan_odometry")) odometry_.emplace();
     if (follow_ != "off" && follow_ != "nearest") {
       char* end = nullptr;
       follow_id_ = std::strtol(follow_.c_str(), &end, 10);
@@ -63,9 +68,11 @@ class LegPeople : public Tracker {
   }
 
   void process(Frame& f) override {
+    if (odometry_) useScanOdometry(f);
     std::vector<LegDetection> legs = detections(f);
     std::function<bool(double, double)> is_static;
-    if (scene_) is_static = [&](double x, double y) { return scene_->isStatic(x, y, f.t); };
+    if (scene_)
+      is_static = [&](double x, double y) { return scene_->isStatic(x, y, f.t, static_radius_); };
     tracker_.step(f.t, legs, is_static);
     if (scene_) scene_->update(f, tracker_.occupiedByPeople());
     const auto people = tracker_.people();
@@ -89,7 +96,12 @@ class LegPeople : public Tracker {
   }
 
   std::vector<std::pair<std::string, long>> counters() const override {
-    return {{"objects", long(tracker_.objectCount())}};
+    std::vector<std::pair<std::string, long>> c{{"objects", long(tracker_.objectCount())}};
+    if (odometry_) {
+      c.emplace_back("scan_matches", odometry_->matched());
+      c.emplace_back("scan_matches_rejected", odometry_->rejected());
+    }
+    return c;
   }
 
  private:
@@ -111,11 +123,44 @@ class LegPeople : public Tracker {
       d.p = {x, y};
       auto it = score.find(int(i));
       d.score = it != score.end() ? it->second : (classified ? 0.0 : 1.0);
-      d.sensor = {f.sensor_pose.x(), f.sensor_pose.y()};
+      d.sensor = nearestSensor(f, d.p);
       d.cluster = int(i);
       out.push_back(d);
     }
     return out;
+  }
+
+  // Data without odometry: the robot's motion from matching its scans (all scanners together);
+  // the frame's robot and sensor poses are moved into that odometry frame, so tracks, outputs
+  // and the static scene all live in a frame where walls stand still.
+  void useScanOdometry(Frame& f) {
+    const auto& cloud = f.cloud();
+    std::vector<Eigen::Vector2d> pts;
+    pts.reserve(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      if (!f.isKept(i)) continue;  // e.g. the robot's own footprint (height_band)
+      float x, y, z;
+      cloud.getPoint(i, x, y, z);
+      pts.emplace_back(x, y);
+    }
+    const mrpt::poses::CPose3D ego(odometry_->update(pts, f.t));
+    const mrpt::poses::CPose3D robot = ego + f.robot_pose;
+    const mrpt::poses::CPose3D old_inv = -f.robot_pose;  // sensor poses -> their mounts
+    f.sensor_pose = robot + (old_inv + f.sensor_pose);
+    for (SensorPose& s : f.sensors) s.pose = robot + (old_inv + s.pose);
+    f.robot_pose = robot;
+  }
+
+  // The scanner nearest to a fixed-frame point: with several scanners merged, the one that saw it
+  // (the apex of P3 eq. 6's hidden area).
+  static Eigen::Vector2d nearestSensor(const Frame& f, const Eigen::Vector2d& p) {
+    Eigen::Vector2d best(f.sensor_pose.x(), f.sensor_pose.y());
+    double bd = INFINITY;
+    for (const SensorPose& s : f.sensors) {
+      const Eigen::Vector2d q(s.pose.x(), s.pose.y());
+      if ((q - p).norm() < bd) bd = (q - p).norm(), best = q;
+    }
+    return best;
   }
 
   // Person following: the given track, or the nearest confirmed person inside the zone in front
@@ -145,10 +190,12 @@ class LegPeople : public Tracker {
 
   LegPeopleTracker tracker_;
   std::optional<StaticScene> scene_;
+  std::optional<ScanOdometry> odometry_;
   bool report_tentative_;
   std::string follow_;
   long follow_id_ = 0, followed_ = 0;
   std::vector<double> follow_zone_;
+  double static_radius_;
   mutable bool classifier_seen_ = false;
 };
 
@@ -168,6 +215,12 @@ PluginDescriptor describe() {
                       "a leg or clutter track unseen this long is dropped"),
       ParamSpec::real("leg_score", def.leg_score, "", 0, 1,
                       "tracks whose mean classifier score reaches this are legs"),
+      ParamSpec::real("moving_leg_score", def.moving_leg_score, "", 0, 1,
+                      "a track moving at init_speed or more is leg-like from this mean score on "
+                      "(far legs score low but walk)"),
+      ParamSpec::real("moving_confirm_travel", def.moving_confirm_travel, "m", 0, 100,
+                      "a person whose legs' mean score is below leg_score is confirmed once it "
+                      "moved this far"),
       ParamSpec::real("pair_distance", def.pair_distance, "m", 0, 5,
                       "two legs at most this far apart form a person"),
       ParamSpec::real("confirm_travel", def.confirm_travel, "m", 0, 100,
@@ -181,13 +234,22 @@ PluginDescriptor describe() {
       ParamSpec::real("flip_time", def.flip_time, "s", 0, 3600, "see flip_speed"),
       ParamSpec::real("init_speed", def.init_speed, "m/s", 0, 100,
                       "a new person faces their legs' motion above this speed, else the scanner"),
+      ParamSpec::boolean("scan_odometry", false,
+                         "for data without odometry from a moving robot: estimate its motion by "
+                         "matching each frame's scans (MRPT ICP against keyframes) and track in "
+                         "that frame, so walls stand still (robot poses in outputs become it)"),
       ParamSpec::boolean("report_tentative", false, "also write tracks not yet confirmed"),
       ParamSpec::boolean("static_scene", true,
                          "no person starts in a cell the local occupancy grid (or the prior map) "
                          "has seen occupied for static_persist seconds"),
-      ParamSpec::real("static_persist", so.persist, "s", 0, 3600,
-                      "a cell occupied this long (not by a tracked person) is static scene"),
+      ParamSpec::real("static_persist", 1.0, "s", 0, 3600,
+                      "a cell occupied this long (not by a confirmed person) is static scene; "
+                      "short, as a new person must walk to be confirmed anyway, and a moving "
+                      "robot sees furniture only for seconds"),
       ParamSpec::real("static_cell", so.cell, "m", 0.01, 1, "cell size of the static-scene grid"),
+      ParamSpec::real("static_radius", 0.07, "m", 0, 1,
+                      "a leg whose circle centre has a static cell this close is on the static "
+                      "scene (the centre lies a leg radius behind the points it was fitted to)"),
       ParamSpec::text("prior_map", std::string(),
                       "optional map of the fixed frame: ROS map.yaml or MRPT .gridmap; its "
                       "occupied cells are static scene"),

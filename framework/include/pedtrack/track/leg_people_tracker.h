@@ -33,12 +33,16 @@ struct LegPeopleParams {
   /// Objects with a mean classifier score ≥ this are leg-like. The shipped leg models are
   /// Platt-calibrated on 1 leg per 19 non-legs, so 0.25 is already ~6× the prior odds.
   double leg_score = 0.25;
+  /// A free object moving at init_speed or more is leg-like from this mean score on.
+  double moving_leg_score = 0.05;
   double pair_distance = 0.7;   ///< m, two legs at most this far apart form a person
   double confirm_travel = 0.5;  ///< m, a tentative person that moved this far is confirmed
+  /// m, a person whose legs score below leg_score is confirmed once it moved this far instead.
+  double moving_confirm_travel = 1.0;
   double max_coast = 1.0;       ///< s, a person with no leg seen this long is deleted
   double max_leg_spread = 1.0;  ///< m, a person whose legs drift farther apart loses one
   double flip_speed = 0.5;      ///< m/s, walking backwards faster than this turns the track
-  double flip_time = 1.0;       ///< s, ... for this long
+  double flip_time = 0.5;       ///< s, ... for this long
   double init_speed = 0.3;      ///< m/s, a new person's facing is their legs' motion above this
 };
 
@@ -74,16 +78,18 @@ class LegPeopleTracker {
             const std::function<bool(double, double)>& is_static);
 
   std::vector<PersonState> people() const;
-  /// Fixed-frame positions of every person (tentative too) and their legs: what a static-scene
-  /// map must not absorb.
+  /// Fixed-frame positions of every confirmed person and their legs: what a static-scene map
+  /// must not absorb (a person standing still for minutes).
   std::vector<Eigen::Vector2d> occupiedByPeople() const;
   std::size_t objectCount() const;
 
  private:
   struct Object;
   struct Person;
+  bool legLike(const Object& o) const;
   void associate(double t, const std::vector<LegDetection>& legs);
-  void updatePeople(double t, const std::vector<LegDetection>& legs);
+  void updatePeople(double t, const std::vector<LegDetection>& legs,
+                    const std::function<bool(double, double)>& is_static);
   void formPeople(double t, const std::vector<LegDetection>& legs,
                   const std::function<bool(double, double)>& is_static);
 

@@ -1,0 +1,68 @@
+#pragma once
+// Scan-matching odometry: the robot's planar motion from its own range scans, for data that has
+// no odometry (e.g. a wheelchair bag with 2D scanners and no /tf). Without it a moving robot's
+// walls move in the tracking frame, so nothing there is ever static and every wall spawns tracks.
+//
+// Each scan is matched by ICP (MRPT's CICP) against a keyframe, not against the previous scan:
+// while the robot stays within keyframe_distance / keyframe_angle of the keyframe every match is
+// against the same reference, so errors do not add up (a standing robot does not drift); a new
+// keyframe is taken only once the robot has moved that far. The initial guess is a constant-
+// velocity prediction; a match that disagrees with it by more than max_step, or that few points
+// support, is rejected and the prediction is used instead (counted in rejected()); a rejected
+// scan becomes a keyframe only if the scan before it was rejected too.
+#include <mrpt/poses/CPose2D.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace pedtrack::track {
+
+struct ScanOdometryOptions {
+  /// A new keyframe once the robot moved this far (m) from the current one...
+  double keyframe_distance = 0.2;
+  /// ... or turned this much (rad). Both small enough that a scan still overlaps its keyframe
+  /// almost fully, large enough that a standing or slow robot keeps one reference for long.
+  double keyframe_angle = 5.0 * M_PI / 180;
+  /// ICP's initial correspondence distance (m, CICP thresholdDist): must exceed the prediction
+  /// error; ICP halves it down to ~0.1 m as it converges.
+  double max_match_distance = 0.5;
+  int max_iterations = 40;
+  /// A match more than this (m) from the constant-velocity prediction is rejected: no wheelchair
+  /// changes speed by 10 m/s within a 10 Hz scan, a jump that big is a wrong local minimum.
+  double max_step = 1.0;
+  /// A scan with fewer points than this (after thinning) is not matched: the prediction is used.
+  std::size_t min_points = 30;
+  /// Points are thinned to one per cell (m) of a grid in the robot frame before matching: near
+  /// returns of a scanner are far denser than needed and would dominate cost and the fit.
+  double decimation_cell = 0.05;
+};
+
+class ScanOdometry {
+ public:
+  explicit ScanOdometry(const ScanOdometryOptions& o = {});
+  ~ScanOdometry();
+  ScanOdometry(ScanOdometry&&) noexcept;
+  ScanOdometry& operator=(ScanOdometry&&) noexcept;
+
+  /// points: this scan's returns in the robot frame (x forward, y left), metres, all scanners of
+  /// the robot together; t: seconds, increasing. Returns the robot pose in the odometry frame,
+  /// which is the robot's pose at the first update().
+  mrpt::poses::CPose2D update(const std::vector<Eigen::Vector2d>& points, double t);
+  /// The pose update() last returned (identity before the first).
+  mrpt::poses::CPose2D pose() const;
+  /// Scans whose match was accepted / rejected (prediction used); scans with too few points to
+  /// match count in neither.
+  long matched() const;
+  long rejected() const;
+
+ private:
+  // CICP and the point maps live in the .cpp: mrpt-slam stays a private dependency of the
+  // framework, so neither plugins nor the installed package need its headers.
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pedtrack::track
