@@ -32,6 +32,7 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.leg_score = s.getDouble("leg_score");
   p.moving_leg_score = s.getDouble("moving_leg_score");
   p.moving_confirm_travel = s.getDouble("moving_confirm_travel");
+  p.max_confirm_speed = s.getDouble("max_confirm_speed");
   p.pair_distance = s.getDouble("pair_distance");
   p.confirm_travel = s.getDouble("confirm_travel");
   p.max_coast = s.getDouble("max_coast");
@@ -221,6 +222,9 @@ PluginDescriptor describe() {
       ParamSpec::real("moving_confirm_travel", def.moving_confirm_travel, "m", 0, 100,
                       "a person whose legs' mean score is below leg_score is confirmed once it "
                       "moved this far"),
+      ParamSpec::real("max_confirm_speed", def.max_confirm_speed, "m/s", 0, 100,
+                      "no person is confirmed while estimated faster than this (a brisk walk): "
+                      "such speeds are mostly a leg jumping to a neighbouring object"),
       ParamSpec::real("pair_distance", def.pair_distance, "m", 0, 5,
                       "two legs at most this far apart form a person"),
       ParamSpec::real("confirm_travel", def.confirm_travel, "m", 0, 100,
