@@ -246,3 +246,29 @@ TEST_CASE("a passing person does not take a static door jamb as their hidden leg
   // The walker is 4 m past the jamb: no person may be left standing on it.
   for (const PersonState& s : tr.people()) CHECK((s.p - jamb).norm() > 0.5);
 }
+
+TEST_CASE("a confirmed person hidden for two seconds is re-acquired by one leg", "[legs]") {
+  LegPeopleParams p;  // max_coast 3 s; gate leg_gate + 0.5 m/s unseen, at most + 0.6 m
+  LegPeopleTracker tr(p);
+  long id = 0;
+  double x = -2, t = 0;
+  // Walks 1.5 m (confirmed), stops at x = -0.5.
+  for (int k = 0; k < 40; ++k, t += 0.1) {
+    x = std::min(-0.5, -2 + 1.0 * t);
+    const double lp = x < -0.5 ? 0.25 * std::sin(2 * M_PI * 0.9 * t) : 0.0;
+    tr.step(t, {{{x + lp / 2, 0.09}, 0.9, {0, -5}, -1}, {{x - lp / 2, -0.09}, 0.9, {0, -5}, -1}},
+            {});
+  }
+  for (const PersonState& s : tr.people())
+    if (s.confirmed) id = s.id;
+  REQUIRE(id > 0);
+  // Hidden for 2 s by someone passing in front, meanwhile stepping 0.55 m aside, then seen by
+  // one leg only (the other behind it): more than leg_gate from where the track was left.
+  for (int k = 0; k < 20; ++k, t += 0.1) tr.step(t, {}, {});
+  bool back = false;
+  for (int k = 0; k < 10; ++k, t += 0.1) {
+    tr.step(t, {{{-0.5, 0.09 + 0.55}, 0.9, {0, -5}, -1}}, {});
+    for (const PersonState& s : tr.people()) back |= s.id == id && s.seen;
+  }
+  CHECK(back);
+}

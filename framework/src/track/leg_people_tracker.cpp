@@ -141,7 +141,10 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       if (slot >= 0) continue;
       const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();
       Object* best = nullptr;
+      // Behind an occlusion a confirmed person's prediction grows uncertain: the gate widens
+      // with the time unseen (a tentative person must still prove itself on its own legs).
       double bd = p_.pose.leg_gate;
+      if (P.confirmed) bd += std::min(p_.reacquire_spread * (t - P.last_seen), p_.reacquire_max);
       for (auto& o : objects_) {
         if (o->person >= 0 || o->det < 0 || !legLike(*o)) continue;
         // A door jamb or table leg next to a passing person must not become their leg: once
@@ -281,6 +284,7 @@ std::vector<PersonState> LegPeopleTracker::people() const {
     s.id = q->id;
     s.confirmed = q->confirmed;
     s.seen = q->seen;
+    s.unseen = t_ - q->last_seen;
     s.p = {q->est.x(), q->est.y()};
     s.v = q->est.velocity();
     s.yaw = q->est.yaw();

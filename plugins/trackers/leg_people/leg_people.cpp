@@ -36,6 +36,8 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.pair_distance = s.getDouble("pair_distance");
   p.confirm_travel = s.getDouble("confirm_travel");
   p.max_coast = s.getDouble("max_coast");
+  p.reacquire_spread = s.getDouble("reacquire_spread");
+  p.reacquire_max = s.getDouble("reacquire_max");
   p.max_leg_spread = s.getDouble("max_leg_spread");
   p.flip_speed = s.getDouble("flip_speed");
   p.flip_time = s.getDouble("flip_time");
@@ -50,7 +52,8 @@ class LegPeople : public Tracker {
         report_tentative_(ctx.params.getBool("report_tentative")),
         follow_(ctx.params.getString("follow")),
         follow_zone_(ctx.params.getVector("follow_zone")),
-        static_radius_(ctx.params.getDouble("static_radius")) {
+        static_radius_(ctx.params.getDouble("static_radius")),
+        report_coast_(ctx.params.getDouble("report_coast")) {
     if (ctx.params.getBool("static_scene")) {
       StaticScene::Options o;
       o.persist = ctx.params.getDouble("static_persist");
@@ -80,6 +83,7 @@ class LegPeople : public Tracker {
     chooseFollowed(f, people);
     for (const PersonState& s : people) {
       if (!s.confirmed && !report_tentative_) continue;
+      if (s.unseen > report_coast_) continue;  // kept for re-acquisition, not reported
       Track t;
       t.id = s.id;
       t.x = s.p.x(), t.y = s.p.y();
@@ -197,6 +201,7 @@ class LegPeople : public Tracker {
   long follow_id_ = 0, followed_ = 0;
   std::vector<double> follow_zone_;
   double static_radius_;
+  double report_coast_;
   mutable bool classifier_seen_ = false;
 };
 
@@ -231,6 +236,11 @@ PluginDescriptor describe() {
                       "a new person is confirmed (reported) once it moved this far"),
       ParamSpec::real("max_coast", def.max_coast, "s", 0, 3600,
                       "a person with neither leg seen this long is deleted"),
+      ParamSpec::real("reacquire_spread", def.reacquire_spread, "m/s", 0, 100,
+                      "while a confirmed person is unseen (occluded in a crowd), the gate in which "
+                      "a free leg becomes theirs widens this fast"),
+      ParamSpec::real("reacquire_max", def.reacquire_max, "m", 0, 10,
+                      "... by at most this much beyond leg_gate"),
       ParamSpec::real("max_leg_spread", def.max_leg_spread, "m", 0.1, 10,
                       "a person's legs farther apart than this: the outer one is dropped"),
       ParamSpec::real("flip_speed", def.flip_speed, "m/s", 0, 100,
@@ -242,6 +252,9 @@ PluginDescriptor describe() {
                          "for data without odometry from a moving robot: estimate its motion by "
                          "matching each frame's scans (MRPT ICP against keyframes) and track in "
                          "that frame, so walls stand still (robot poses in outputs become it)"),
+      ParamSpec::real("report_coast", 0.5, "s", 0, 3600,
+                      "a person unseen longer than this is no longer written (kept until "
+                      "max_coast, so their legs can be re-acquired behind an occlusion)"),
       ParamSpec::boolean("report_tentative", false, "also write tracks not yet confirmed"),
       ParamSpec::boolean("static_scene", true,
                          "no person starts in a cell the local occupancy grid (or the prior map) "

@@ -40,11 +40,14 @@ struct LegPeopleParams {
   /// m, a person whose legs score below leg_score is confirmed once it moved this far instead.
   double moving_confirm_travel = 1.0;
   double max_confirm_speed = 2.0;  ///< m/s, no person is confirmed while estimated faster
-  double max_coast = 1.0;          ///< s, a person with no leg seen this long is deleted
-  double max_leg_spread = 1.0;     ///< m, a person whose legs drift farther apart loses one
-  double flip_speed = 0.5;         ///< m/s, walking backwards faster than this turns the track
-  double flip_time = 0.5;          ///< s, ... for this long
-  double init_speed = 0.3;         ///< m/s, a new person's facing is their legs' motion above this
+  double reacquire_spread =
+      0.5;  ///< m/s, a confirmed person's missing-leg gate widens this fast while unseen
+  double reacquire_max = 0.6;   ///< m, ... by at most this much
+  double max_coast = 3.0;       ///< s, a person with no leg seen this long is deleted
+  double max_leg_spread = 1.0;  ///< m, a person whose legs drift farther apart loses one
+  double flip_speed = 0.5;      ///< m/s, walking backwards faster than this turns the track
+  double flip_time = 0.5;       ///< s, ... for this long
+  double init_speed = 0.3;      ///< m/s, a new person's facing is their legs' motion above this
 };
 
 /// A leg detection this scan: position (fixed frame), classifier score, the sensor seeing it.
@@ -60,6 +63,7 @@ struct PersonState {
   long id = 0;
   bool confirmed = false;
   bool seen = false;  ///< a leg of theirs was associated this scan
+  double unseen = 0;  ///< s since a leg of theirs was last seen
   Eigen::Vector2d p, v;
   double yaw = 0;
   Eigen::Matrix2d cov;
