@@ -4,6 +4,7 @@
 // `repeat` times over, on this one thread.
 #include <chrono>
 #include <cstdio>
+#include <opencv2/core.hpp>
 #include <thread>
 
 #include "commands.h"
@@ -17,6 +18,9 @@ namespace pedtrack::cli {
 int benchStages(const std::string& pipeline_file, const std::string& input,
                 const std::string& topic, const std::vector<std::string>& sets, long frames,
                 long repeat, const std::vector<std::string>& plugin_path) {
+  // One core, as the figures claim: OpenCV would otherwise spread a classifier's predict() over
+  // its thread pool (as in bench_model.cpp).
+  cv::setNumThreads(1);
   PluginRegistry registry(PluginRegistry::defaultSearchPath(plugin_path));
   PipelineOverrides ov;
   ov.input = input;

@@ -241,3 +241,34 @@ TEST_CASE("train, save, load: identical predictions; bad model files are one-lin
     CHECK(std::string(e.what()).find("'svm' model, not 'knn'") != std::string::npos);
   }
 }
+
+TEST_CASE("the RBF decision function agrees with OpenCV's predict on the shipped leg model") {
+  const LoadedSvm m = loadSvmModel(std::string(PEDTRACK_SOURCE_DIR) + "/models/legs_svm.yml");
+  const SvmClassifier& c = *m.svm;
+  const std::size_t n = 200, d = c.dims();
+  std::vector<double> x(n * d);
+  cv::Mat z(int(n), int(d), CV_32F);
+  cv::RNG rng(7);
+  const cv::Mat sv = c.svm()->getSupportVectors();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < d; ++j) {
+      // near the support vectors (both sides of the boundary), mapped back to raw features
+      const float v =
+          sv.at<float>(int(i * 7 % std::size_t(sv.rows)), int(j)) + float(rng.gaussian(0.3));
+      z.at<float>(int(i), int(j)) = v;
+      x[i * d + j] = c.standardizer().mean[j] + v * c.standardizer().scale[j];
+    }
+  std::vector<double> fast;
+  c.decision(x.data(), n, fast);
+  cv::Mat ref;
+  c.svm()->predict(z, ref, cv::ml::StatModel::RAW_OUTPUT);
+  int both_signs[2] = {0, 0};
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = ref.at<float>(int(i));
+    // Both evaluate the kernel in float: they differ by a few 1e-3 at most.
+    CHECK(fast[i] == Approx(r).margin(5e-3));
+    ++both_signs[r > 0];
+  }
+  CHECK(both_signs[0] > 0);  // the inputs reach both sides of the boundary
+  CHECK(both_signs[1] > 0);
+}
