@@ -37,11 +37,12 @@ struct LegPeopleTracker::Person {
 };
 
 namespace {
+// Objects are appended with increasing ids and erased in place, so objects_ stays sorted by id.
 template <class V>
 auto findObject(V& objects, long id) -> decltype(objects.front().get()) {
-  for (auto& o : objects)
-    if (o->id == id) return o.get();
-  return nullptr;
+  auto it = std::lower_bound(objects.begin(), objects.end(), id,
+                             [](const auto& o, long v) { return o->id < v; });
+  return it != objects.end() && (*it)->id == id ? it->get() : nullptr;
 }
 }  // namespace
 
@@ -146,12 +147,13 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       double bd = p_.pose.leg_gate;
       if (P.confirmed) bd += std::min(p_.reacquire_spread * (t - P.last_seen), p_.reacquire_max);
       for (auto& o : objects_) {
-        if (o->person >= 0 || o->det < 0 || !legLike(*o)) continue;
+        if (o->person >= 0 || o->det < 0) continue;
+        const double d = (o->pos() - want).norm();
+        if (d >= bd || !legLike(*o)) continue;
         // A door jamb or table leg next to a passing person must not become their leg: once
         // adopted it would hold the track on the furniture after the person left.
         if (is_static && is_static(o->pos().x(), o->pos().y())) continue;
-        const double d = (o->pos() - want).norm();
-        if (d < bd) bd = d, best = o.get();
+        bd = d, best = o.get();
       }
       if (!best) continue;
       best->person = P.id;
