@@ -272,3 +272,24 @@ TEST_CASE("a confirmed person hidden for two seconds is re-acquired by one leg",
   }
   CHECK(back);
 }
+
+TEST_CASE("resolve_swaps reads legs the wrong way round as swapped labels, not a turn about",
+          "[legs]") {
+  ZoningParams p;
+  // Facing +x, the left leg should be at +y: here the labels are the other way round.
+  const Eigen::Vector2d left(0, -0.1), right(0, 0.1);
+  const ZoneResult plain = zoneOrientation(left, right, 0.0, 0.2, p);
+  CHECK(plain.zone == MotionZone::TurnInPlace);
+  CHECK(angleDiff(plain.yaw, M_PI) < 1e-9);  // P3: the perpendicular, a turn about
+  CHECK_FALSE(plain.swap);
+  p.resolve_swaps = true;
+  const ZoneResult resolved = zoneOrientation(left, right, 0.0, 0.2, p);
+  CHECK(resolved.swap);
+  CHECK(angleDiff(resolved.yaw, 0.0) < 1e-9);
+  // A real 60° turn in place is still a turn.
+  const Eigen::Vector2d l2(0.1 * std::cos(M_PI / 2 + M_PI / 3),
+                           0.1 * std::sin(M_PI / 2 + M_PI / 3));
+  const ZoneResult turn = zoneOrientation(l2, -l2, 0.0, 0.2, p);
+  CHECK_FALSE(turn.swap);
+  CHECK(angleDiff(turn.yaw, M_PI / 3) < 1e-9);
+}

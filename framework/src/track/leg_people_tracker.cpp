@@ -179,6 +179,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
         P.cluster = legs[std::size_t(o->det)].cluster;
       }
     P.est.update(l, r, sensor);
+    if (P.est.legsSwapped()) std::swap(P.left, P.right);
     const Eigen::Vector2d c(P.est.x(), P.est.y());
     // Travel counts only where a leg was seen: a coasting filter that extrapolates a jump (a leg
     // re-associated to clutter) would otherwise confirm a ghost without any measurement.

@@ -115,6 +115,7 @@ Eigen::Vector2d LegPoseEstimator::hiddenLeg(const Eigen::Vector2d& sensor,
 
 void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
                               const Eigen::Vector2d& sensor) {
+  legs_swapped_ = false;
   if (!left.seen && !right.seen) return;  // coast on the prediction
   bool inferred = false;
   if (left.seen) {
@@ -133,6 +134,11 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
     inferred = true;
   }
   const ZoneResult z = zoneOrientation(left_, right_, prev_yaw_, w0_, p_.zoning);
+  if (z.swap) {
+    std::swap(left_, right_);
+    std::swap(hidden_left_, hidden_right_);
+    legs_swapped_ = true;
+  }
   // z = [midpoint, θ_m] (eq. 5); the midpoint alone when the legs give no orientation.
   const int rows = z.observable ? 3 : 2;
   Eigen::VectorXd meas(rows);

@@ -55,6 +55,12 @@ ZoneResult zoneOrientation(const Eigen::Vector2d& left, const Eigen::Vector2d& r
   } else {
     out.zone = MotionZone::TurnInPlace;
     delta = wrapAngle(beta - M_PI / 2);
+    // With resolve_swaps, the legs' labels swapped rather than the person turned round when
+    // the perpendicular is over 90° away: the other one is then the smaller turn.
+    if (p.resolve_swaps && std::abs(delta) > M_PI / 2) {
+      delta = wrapAngle(beta + M_PI / 2);
+      out.swap = true;
+    }
   }
   out.yaw = wrapAngle(prev_yaw + delta);
   return out;

@@ -24,6 +24,7 @@ using namespace pedtrack::track;
 LegPeopleParams readParams(const ParamSet& s) {
   LegPeopleParams p;
   p.pose = readLegPoseParams(s);
+  p.pose.zoning.resolve_swaps = s.getBool("resolve_swaps");
   if (s.getString("gait_solver") == "ipopt") p.pose.gait_solver = &gait::fitIpopt;
   p.object_q = s.getDouble("object_q");
   p.object_sigma = s.getDouble("object_sigma");
@@ -255,6 +256,9 @@ PluginDescriptor describe() {
       ParamSpec::real("report_coast", 0.5, "s", 0, 3600,
                       "a person unseen longer than this is no longer written (kept until "
                       "max_coast, so their legs can be re-acquired behind an occlusion)"),
+      ParamSpec::boolean("resolve_swaps", true,
+                         "a turn in place of over 90° between two scans is read as the person's "
+                         "legs swapped by the assignment (the nearer perpendicular), not a turn"),
       ParamSpec::boolean("report_tentative", false, "also write tracks not yet confirmed"),
       ParamSpec::boolean("static_scene", true,
                          "no person starts in a cell the local occupancy grid (or the prior map) "

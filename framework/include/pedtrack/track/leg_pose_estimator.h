@@ -77,6 +77,9 @@ class LegPoseEstimator {
   Eigen::Vector2d velocity() const { return g_.x.segment<2>(3); }
   /// Turns the estimate round by π (front and back swapped; left and right with them).
   void turnAround();
+  /// The last update() found the legs the other way round and swapped its left and right (a
+  /// caller that keeps its own leg identities swaps them too).
+  bool legsSwapped() const { return legs_swapped_; }
   MotionZone zone() const { return zone_; }
   double stepWidth() const { return w0_; }
   bool stepWidthLearned() const { return w0_learned_; }
@@ -96,6 +99,7 @@ class LegPoseEstimator {
   double measured_yaw_ = 0;  // the last orientation measurement a turning zone gave
   bool have_measured_yaw_ = false;
   double hidden_left_ = 0, hidden_right_ = 0;  // T_o per leg, s
+  bool legs_swapped_ = false;
   double w0_ = 0;
   std::vector<double> w0_samples_;  // leg distances while W₀ is learned
   bool w0_learned_ = false;

@@ -13,7 +13,8 @@
 //  - go-straight-slight-turn (usual): two parallel lines W₀ apart through the legs give the new
 //    sagittal direction, ρ sin(β − Δ) = W₀, the solution nearest θ̂ (Fig. 4 right), accepted
 //    while |Δ| ≤ slight_turn_max.
-//  - turn-in-place (unusual): the sagittal axis perpendicular to the leg vector, Δ = β − 90°.
+//  - turn-in-place (unusual): the sagittal axis perpendicular to the leg vector, Δ = β − 90° (with
+//    resolve_swaps, β + 90° and the legs' labels swapped when that is the smaller turn).
 // P3 gives the zones as a figure, not numbers: the thresholds are ours (documented parameters
 // of leg_pose and leg_people).
 #include <Eigen/Core>
@@ -32,6 +33,11 @@ struct ZoningParams {
   double sideways_tolerance = 0.3;  ///< side step: |d_u| within this fraction of W₀
   bool refine_straight = true;      ///< measure small turns inside the go-straight band
   double slight_turn_max = 0.79;    ///< rad (45°): larger turns are turns in place
+  /// A turn in place of over 90° is read as the legs' labels swapped (the nearer perpendicular).
+  /// Off for one person, whose legs the estimator labels itself and whose fast turns may leave
+  /// θ̂ far behind; on in leg_people, where a crowd's global assignment swaps leg identities
+  /// far more often than anyone turns about between two scans.
+  bool resolve_swaps = false;
 };
 
 struct ZoneResult {
@@ -42,6 +48,10 @@ struct ZoneResult {
   /// False when the legs are closer than half a step width (crossing, or one leg's return taken
   /// for both): their vector's direction is then noise, and no orientation is measured.
   bool observable = true;
+  /// True when the legs are taken the other way round (left is right): a turn in place reads
+  /// the perpendicular nearest θ̂, and one more than 90° away means the labels, not the person,
+  /// turned (no one turns 180° between two scans).
+  bool swap = false;
 };
 
 /// The zone of the leg pair (left, right) relative to `prev_yaw`, and the orientation it gives.
