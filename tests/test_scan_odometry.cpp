@@ -14,6 +14,7 @@
 #include <random>
 
 #include "pedtrack/track/scan_odometry.h"
+#include "ray_world.h"
 
 using mrpt::poses::CPose2D;
 using pedtrack::track::ScanOdometry;
@@ -22,39 +23,16 @@ using V2 = Eigen::Vector2d;
 
 namespace {
 
-constexpr double kDeg = M_PI / 180;
+using World = pedtrack::test::RayWorld;
+using pedtrack::test::castRay;
 
-struct World {
-  std::vector<std::array<double, 4>> walls;    // x0, y0, x1, y1
-  std::vector<std::array<double, 3>> circles;  // x, y, r
-};
+constexpr double kDeg = M_PI / 180;
 
 World room() {
   World w;
   w.walls = {{-5, -3, 5, -3}, {5, -3, 5, 3}, {5, 3, -5, 3}, {-5, 3, -5, -3}};
   w.circles = {{-2.0, 1.2, 0.15}, {1.5, 1.8, 0.2}, {2.5, -1.8, 0.15}, {3.8, 0.6, 0.2}};
   return w;
-}
-
-double castRay(const World& w, double ox, double oy, double dx, double dy) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& s : w.walls) {
-    const double ex = s[2] - s[0], ey = s[3] - s[1];
-    const double den = dx * ey - dy * ex;
-    if (std::abs(den) < 1e-12) continue;
-    const double t = ((s[0] - ox) * ey - (s[1] - oy) * ex) / den;
-    const double u = ((s[0] - ox) * dy - (s[1] - oy) * dx) / den;
-    if (t > 1e-6 && u >= 0 && u <= 1) best = std::min(best, t);
-  }
-  for (const auto& c : w.circles) {
-    const double fx = ox - c[0], fy = oy - c[1];
-    const double b = fx * dx + fy * dy, q = fx * fx + fy * fy - c[2] * c[2];
-    const double disc = b * b - q;
-    if (disc < 0) continue;
-    const double t = -b - std::sqrt(disc);
-    if (t > 1e-6) best = std::min(best, t);
-  }
-  return best;
 }
 
 // A 270°, 768-beam scan (Hokuyo-like) from a sensor 0.3 m ahead of the robot's origin, range
