@@ -109,6 +109,33 @@ TEST_CASE("pedtrack import writes the bag as a rawlog that rawlog-edit and the r
 
 namespace {
 
+// odom → base_link at (x, 0), heading +x, on /tf at t.
+void writeOdomTf(rosbag::Bag& bag, const ros::Time& t, double x) {
+  tf2_msgs::TFMessage tf;
+  geometry_msgs::TransformStamped p;
+  p.header.stamp = t;
+  p.header.frame_id = "odom";
+  p.child_frame_id = "base_link";
+  p.transform.translation.x = x;
+  p.transform.rotation.w = 1;
+  tf.transforms.push_back(p);
+  bag.write("/tf", t, tf);
+}
+
+// A LaserScan of 301 beams over ±1.5 rad, every range 3 m.
+sensor_msgs::LaserScan flatScan(const ros::Time& stamp, const std::string& frame) {
+  sensor_msgs::LaserScan s;
+  s.header.stamp = stamp;
+  s.header.frame_id = frame;
+  s.angle_min = -1.5;
+  s.angle_max = 1.5;
+  s.angle_increment = 0.01;
+  s.range_min = 0.1;
+  s.range_max = 10;
+  s.ranges.assign(301, 3.0f);
+  return s;
+}
+
 // A small bag: a robot driving along x at 1 m/s (odom → base_link on /tf, or nav_msgs/Odometry on
 // /odom), a laser mounted at (0.2, 0, 0.3) on it (/tf_static), and a 10 Hz LaserScan.
 std::string writeMovingRobotBag(const std::string& path, bool use_tf) {
@@ -127,15 +154,7 @@ std::string writeMovingRobotBag(const std::string& path, bool use_tf) {
   for (int k = 0; k <= 40; ++k) {  // pose messages every 50 ms
     const ros::Time t(t0 + 0.05 * k);
     if (use_tf) {
-      tf2_msgs::TFMessage tf;
-      geometry_msgs::TransformStamped p;
-      p.header.stamp = t;
-      p.header.frame_id = "odom";
-      p.child_frame_id = "base_link";
-      p.transform.translation.x = 0.05 * k;
-      p.transform.rotation.w = 1;
-      tf.transforms.push_back(p);
-      bag.write("/tf", t, tf);
+      writeOdomTf(bag, t, 0.05 * k);
     } else {
       nav_msgs::Odometry o;
       o.header.stamp = t;
@@ -146,16 +165,8 @@ std::string writeMovingRobotBag(const std::string& path, bool use_tf) {
     }
   }
   for (int k = 1; k <= 15; ++k) {  // scans at 10 Hz, stamped between pose messages
-    sensor_msgs::LaserScan s;
-    s.header.stamp = ros::Time(t0 + 0.1 * k + 0.025);
-    s.header.frame_id = use_tf ? "laser" : "base_link";
-    s.angle_min = -1.5;
-    s.angle_max = 1.5;
-    s.angle_increment = 0.01;
-    s.range_min = 0.1;
-    s.range_max = 10;
-    s.ranges.assign(301, 3.0f);
-    bag.write("/scan", s.header.stamp, s);
+    const ros::Time t(t0 + 0.1 * k + 0.025);
+    bag.write("/scan", t, flatScan(t, use_tf ? "laser" : "base_link"));
   }
   bag.close();
   return path;
@@ -202,30 +213,14 @@ std::string writeTwoScannerBag(const std::string& path) {
   bag.write("/tf_static", ros::Time(t0), mount);
   for (int k = 0; k <= 24; ++k) {
     const ros::Time t(t0 + 0.05 * k);
-    tf2_msgs::TFMessage tf;
-    geometry_msgs::TransformStamped p;
-    p.header.stamp = t;
-    p.header.frame_id = "odom";
-    p.child_frame_id = "base_link";
-    p.transform.translation.x = 0.05 * k;
-    p.transform.rotation.w = 1;
-    tf.transforms.push_back(p);
-    bag.write("/tf", t, tf);
+    writeOdomTf(bag, t, 0.05 * k);
   }
   for (int k = 1; k <= 10; ++k)
     for (const auto& [topic, frame, dt] :
          {std::tuple<std::string, std::string, double>{"/left_scan", "left", 0.01},
           {"/right_scan", "right", 0.05}}) {
-      sensor_msgs::LaserScan s;
-      s.header.stamp = ros::Time(t0 + 0.1 * k + dt);
-      s.header.frame_id = frame;
-      s.angle_min = -1.5;
-      s.angle_max = 1.5;
-      s.angle_increment = 0.01;
-      s.range_min = 0.1;
-      s.range_max = 10;
-      s.ranges.assign(301, 3.0f);
-      bag.write(topic, s.header.stamp, s);
+      const ros::Time t(t0 + 0.1 * k + dt);
+      bag.write(topic, t, flatScan(t, frame));
     }
   bag.close();
   return path;
@@ -289,10 +284,12 @@ TEST_CASE("a bad mounts entry is named with its key", "[rosbag]") {
 TEST_CASE("negative_2.bag's three scanners merge into frames of three observations", "[rosbag]") {
   const std::string data = sharedDataDir();
   requireData(data.empty() ? "" : data + "/leg_tracker/negative_2.bag");
-  std::string text = readFile(std::string(PEDTRACK_SOURCE_DIR) + "/configs/negative_2_merged.ini");
+  // The config's own path: its model and other relative paths resolve against configs/.
+  const std::string config = std::string(PEDTRACK_SOURCE_DIR) + "/configs/negative_2_merged.ini";
+  std::string text = readFile(config);
   const std::string var = "${PEDTRACK_DATA}";
   text.replace(text.find(var), var.size(), data);
-  const auto frames = readAllFrames(text, "negative_2_merged.ini");
+  const auto frames = readAllFrames(text, config);
   // 435 left, 435 rear and 434 right scans, always in that order: the last turn lacks its right.
   REQUIRE(frames.size() == 435);
   std::size_t full = 0;
