@@ -88,6 +88,8 @@ TEST_CASE("odometry actions move the robot and timestamps increase", "[rawlog]")
   const std::vector<Frame> frames = readFrames(kSena);
   REQUIRE(frames.size() == 225);
   CHECK(frames.front().robot_pose.norm() == 0);  // before the first action
+  CHECK_FALSE(frames.front().has_odometry);
+  CHECK(frames.back().has_odometry);
   double travelled = 0;
   for (std::size_t i = 1; i < frames.size(); ++i) {
     CHECK(frames[i].t > frames[i - 1].t);

@@ -184,12 +184,14 @@ TEST_CASE("robot poses come from interpolated /tf with the sensor mounting or el
     CHECK(tf_frames[i].robot_pose.x() == Approx(x).margin(1e-6));
     CHECK(tf_frames[i].sensor_pose.x() == Approx(x + 0.2).margin(1e-6));
     CHECK(tf_frames[i].sensor_pose.z() == Approx(0.3).margin(1e-6));
+    CHECK(tf_frames[i].has_odometry);
   }
   const auto odom_frames = replay("rosbag", writeMovingRobotBag(dir + "/odom.bag", false));
   REQUIRE(odom_frames.size() == 15);
   // Without tf: the last odometry message at or before the scan (0.025 s earlier: 2.5 cm behind).
   CHECK(odom_frames[4].robot_pose.x() == Approx(0.5).margin(1e-6));
   CHECK(odom_frames[4].sensor_pose.x() == Approx(0.5).margin(1e-6));
+  CHECK(odom_frames[4].has_odometry);
 }
 
 namespace {

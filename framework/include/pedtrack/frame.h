@@ -93,7 +93,11 @@ struct Frame {
   std::size_t index = 0;  ///< 0-based position in the stream
   double t = 0;           ///< observation timestamp, UNIX seconds
   std::vector<mrpt::obs::CObservation::Ptr> observations;
-  mrpt::poses::CPose3D robot_pose;   ///< robot (base) in the fixed/odometry frame
+  mrpt::poses::CPose3D robot_pose;  ///< robot (base) in the fixed/odometry frame
+  /// The source knows the robot's motion (odometry, /tf, a simulator). False: robot_pose is the
+  /// identity only because nothing said otherwise (a lone live sensor, a bag without poses),
+  /// and a robot that moves makes the world move in the fixed frame.
+  bool has_odometry = false;
   mrpt::poses::CPose3D sensor_pose;  ///< first range sensor in the fixed frame
   /// Every range sensor that contributed to the frame, one entry per range observation, in
   /// observation order (several scanners merged into one frame, each with its own pose);

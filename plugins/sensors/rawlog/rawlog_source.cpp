@@ -47,6 +47,7 @@ class RawlogSource : public Sensor {
         applyActions(*acts);
       } else if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(obj)) {
         odometry_ = mrpt::poses::CPose3D(odo->odometry);
+        has_odometry_ = true;
       } else if (auto obs = std::dynamic_pointer_cast<CObservation>(obj)) {
         if (wanted(*obs)) frame.observations.push_back(obs);
       }
@@ -54,6 +55,7 @@ class RawlogSource : public Sensor {
       const CObservation& first = *frame.observations.front();
       frame.t = mrpt::Clock::toDouble(first.timestamp);
       frame.robot_pose = odometry_;
+      frame.has_odometry = has_odometry_;
       for (const auto& o : frame.observations) {
         mrpt::poses::CPose3D mount;
         o->getSensorPose(mount);
@@ -93,6 +95,8 @@ class RawlogSource : public Sensor {
 
   void applyActions(const CActionCollection& acts) {
     for (const auto& a : acts) {
+      has_odometry_ |= std::dynamic_pointer_cast<CActionRobotMovement2D>(a.get_ptr()) ||
+                       std::dynamic_pointer_cast<CActionRobotMovement3D>(a.get_ptr());
       if (auto m2 = std::dynamic_pointer_cast<CActionRobotMovement2D>(a.get_ptr())) {
         mrpt::poses::CPose2D inc;
         m2->poseChange->getMean(inc);
@@ -137,6 +141,7 @@ class RawlogSource : public Sensor {
   std::uintmax_t file_size_;
   bool gz_;
   mrpt::poses::CPose3D odometry_;
+  bool has_odometry_ = false;  // an odometry observation or robot-movement action was read
   std::size_t entry_ = 0, skipped_ = 0;
   ReplayPacer pacer_;
 };

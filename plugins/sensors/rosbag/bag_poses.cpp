@@ -118,7 +118,7 @@ void BagPoses::warnOnce(const std::string& msg) {
   std::cerr << "warning: " << msg << "\n";
 }
 
-void BagPoses::lookup(const std::string& sensor_frame, const std::string& topic,
+bool BagPoses::lookup(const std::string& sensor_frame, const std::string& topic,
                       const ros::Time& stamp, mrpt::poses::CPose3D& robot,
                       mrpt::poses::CPose3D& mount) {
   std::string base = base_;
@@ -141,8 +141,10 @@ void BagPoses::lookup(const std::string& sensor_frame, const std::string& topic,
   }
   if (tryTf(fixed_, base, stamp, robot)) {
     last_robot_ = robot;
+    robot_known_ = true;
   } else if (odomAt(stamp, robot)) {
     last_robot_ = robot;
+    robot_known_ = true;
   } else {
     robot = last_robot_;
     if (tf_count_ == 0 && odom_.empty())
@@ -151,6 +153,7 @@ void BagPoses::lookup(const std::string& sensor_frame, const std::string& topic,
       warnOnce("no tf from '" + fixed_ + "' to '" + base +
                "' at some scans: the last known pose is used");
   }
+  return robot_known_;
 }
 
 }  // namespace pedtrack::rosbag_source

@@ -30,8 +30,9 @@ class BagPoses {
 
   /// The robot pose in the fixed frame and the mounting pose on the robot at `stamp` of the
   /// sensor publishing `topic` in `sensor_frame`: /tf's, else the `mounts` entry of the topic.
-  /// Falls back (once warned) to odometry, the last known pose, or the identity.
-  void lookup(const std::string& sensor_frame, const std::string& topic, const ros::Time& stamp,
+  /// Falls back (once warned) to odometry, the last known pose, or the identity. Returns whether
+  /// the bag has given a robot pose (tf to the fixed frame or odometry) at or before `stamp`.
+  bool lookup(const std::string& sensor_frame, const std::string& topic, const ros::Time& stamp,
               mrpt::poses::CPose3D& robot, mrpt::poses::CPose3D& mount);
 
   std::size_t tfCount() const { return tf_count_; }
@@ -50,6 +51,7 @@ class BagPoses {
   std::size_t tf_count_ = 0;
   std::vector<std::pair<ros::Time, mrpt::poses::CPose3D>> odom_;  // sorted by time
   mrpt::poses::CPose3D last_robot_;
+  bool robot_known_ = false;  // a robot pose has come from tf or odometry
   std::vector<std::string> warned_;
 };
 

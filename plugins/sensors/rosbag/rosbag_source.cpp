@@ -90,6 +90,7 @@ class RosbagSource : public Sensor {
         *std::max_element(group.begin(), group.end(),
                           [](const Message& a, const Message& b) { return a.stamp < b.stamp; });
     frame.robot_pose = newest.robot;
+    frame.has_odometry = newest.robot_known;
     for (const Message& m : group) {
       const mrpt::poses::CPose3D in_fixed = m.robot + m.mount;
       m.obs->setSensorPose(&m == &newest ? m.mount : in_fixed - frame.robot_pose);
@@ -118,6 +119,7 @@ class RosbagSource : public Sensor {
     std::string topic;
     double stamp = 0;
     mrpt::poses::CPose3D robot, mount;
+    bool robot_known = false;  // robot from tf or odometry, not the identity by default
   };
 
   // The next scan or cloud message of the view, or nothing at its end.
@@ -132,7 +134,7 @@ class RosbagSource : public Sensor {
       if (auto scan = m.instantiate<sensor_msgs::LaserScan>()) {
         sensor_frame = scan->header.frame_id;
         stamp = scan->header.stamp;
-        poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
+        out.robot_known = poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
         auto o = mrpt::obs::CObservation2DRangeScan::Create();
         if (!mrpt::ros1bridge::fromROS(*scan, out.mount, *o))
           throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " +
@@ -148,7 +150,7 @@ class RosbagSource : public Sensor {
       } else if (auto cloud = m.instantiate<sensor_msgs::PointCloud2>()) {
         sensor_frame = cloud->header.frame_id;
         stamp = cloud->header.stamp;
-        poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
+        out.robot_known = poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
         auto o = mrpt::obs::CObservationPointCloud::Create();
         auto pts = mrpt::maps::CSimplePointsMap::Create();
         if (!mrpt::ros1bridge::fromROS(*cloud, *pts))

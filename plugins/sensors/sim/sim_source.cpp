@@ -52,6 +52,7 @@ class SimSource : public Sensor {
     if (!sim_.next(f)) return false;
     frame.t = f.t;
     frame.robot_pose = f.robot_odometry;
+    frame.has_odometry = true;  // a static scanner's odometry is the identity, and known
     // The scan (the odometry observation's content is the robot pose itself).
     frame.observations.push_back(f.observations.back());
     frame.sensor_pose = f.robot_odometry + sim_.scenario().sensor.mount;

@@ -62,7 +62,8 @@ class LegPeople : public Tracker {
       o.cell = ctx.params.getDouble("static_cell");
       scene_.emplace(o);
     }
-    if (ctx.params.getBool("scan_odometry")) odometry_.emplace();
+    scan_odometry_ = ctx.params.getString("scan_odometry");
+    if (scan_odometry_ != "off") odometry_.emplace();
     if (follow_ != "off" && follow_ != "nearest") {
       char* end = nullptr;
       follow_id_ = std::strtol(follow_.c_str(), &end, 10);
@@ -73,6 +74,9 @@ class LegPeople : public Tracker {
   }
 
   void process(Frame& f) override {
+    // auto: scan matching only for data without odometry, and for good once odometry appears
+    // (mixing the two frames would move every track).
+    if (odometry_ && scan_odometry_ == "auto" && f.has_odometry) odometry_.reset();
     if (odometry_) useScanOdometry(f);
     std::vector<LegDetection> legs = detections(f);
     std::function<bool(double, double)> is_static;
@@ -103,7 +107,7 @@ class LegPeople : public Tracker {
 
   std::vector<std::pair<std::string, long>> counters() const override {
     std::vector<std::pair<std::string, long>> c{{"objects", long(tracker_.objectCount())}};
-    if (odometry_) {
+    if (odometry_ && odometry_->matched() + odometry_->rejected() > 0) {
       c.emplace_back("scan_matches", odometry_->matched());
       c.emplace_back("scan_matches_rejected", odometry_->rejected());
     }
@@ -141,13 +145,26 @@ class LegPeople : public Tracker {
   // and the static scene all live in a frame where walls stand still.
   void useScanOdometry(Frame& f) {
     const auto& cloud = f.cloud();
+    // People walk: their returns would drag the match along with them (on a standing scanner in
+    // a room with a few walkers, the estimate wandered 2-4 cm). Points near the people of the
+    // last scan, moved into this robot frame by the last pose, are left out of the match.
+    std::vector<Eigen::Vector2d> people;
+    for (const PersonState& s : tracker_.people()) {
+      double x, y, z;
+      last_robot_.inverseComposePoint(s.p.x(), s.p.y(), 0, x, y, z);
+      people.emplace_back(x, y);
+    }
     std::vector<Eigen::Vector2d> pts;
     pts.reserve(cloud.size());
     for (std::size_t i = 0; i < cloud.size(); ++i) {
       if (!f.isKept(i)) continue;  // e.g. the robot's own footprint (height_band)
       float x, y, z;
       cloud.getPoint(i, x, y, z);
-      pts.emplace_back(x, y);
+      const Eigen::Vector2d q(x, y);
+      if (std::any_of(people.begin(), people.end(),
+                      [&](const Eigen::Vector2d& c) { return (q - c).squaredNorm() < kPersonR2; }))
+        continue;
+      pts.push_back(q);
     }
     const mrpt::poses::CPose3D ego(odometry_->update(pts, f.t));
     const mrpt::poses::CPose3D robot = ego + f.robot_pose;
@@ -155,6 +172,7 @@ class LegPeople : public Tracker {
     f.sensor_pose = robot + (old_inv + f.sensor_pose);
     for (SensorPose& s : f.sensors) s.pose = robot + (old_inv + s.pose);
     f.robot_pose = robot;
+    last_robot_ = robot;
   }
 
   // The scanner nearest to a fixed-frame point: with several scanners merged, the one that saw it
@@ -197,6 +215,9 @@ class LegPeople : public Tracker {
   LegPeopleTracker tracker_;
   std::optional<StaticScene> scene_;
   std::optional<ScanOdometry> odometry_;
+  mrpt::poses::CPose3D last_robot_;               // the last frame's scan-matched robot pose
+  static constexpr double kPersonR2 = 0.5 * 0.5;  // m², a person's legs and a step around them
+  std::string scan_odometry_;                     // auto, on or off
   bool report_tentative_;
   std::string follow_;
   long follow_id_ = 0, followed_ = 0;
@@ -249,10 +270,12 @@ PluginDescriptor describe() {
       ParamSpec::real("flip_time", def.flip_time, "s", 0, 3600, "see flip_speed"),
       ParamSpec::real("init_speed", def.init_speed, "m/s", 0, 100,
                       "a new person faces their legs' motion above this speed, else the scanner"),
-      ParamSpec::boolean("scan_odometry", false,
-                         "for data without odometry from a moving robot: estimate its motion by "
-                         "matching each frame's scans (MRPT ICP against keyframes) and track in "
-                         "that frame, so walls stand still (robot poses in outputs become it)"),
+      ParamSpec::choice("scan_odometry", "auto", {"auto", "on", "off"},
+                        "the robot's motion from matching each frame's scans (MRPT ICP against "
+                        "keyframes), tracked in that frame so walls stand still on a robot "
+                        "without odometry (robot poses in outputs become it). auto: only while "
+                        "the source gives no odometry (a bag without /tf or /odom, a lone live "
+                        "scanner); on: always; off: never (a scanner known to stand still)"),
       ParamSpec::real("report_coast", 0.5, "s", 0, 3600,
                       "a person unseen longer than this is no longer written (kept until "
                       "max_coast, so their legs can be re-acquired behind an occlusion)"),
