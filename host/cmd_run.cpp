@@ -34,13 +34,19 @@ int runCommand(const std::vector<std::string>& args) {
       "plugin-path", po::value(&plugin_path)->composing(),
       "extra plugin directory (repeatable, searched first)")(
       "max-frames", po::value(&run.max_frames)->default_value(-1), "stop after N frames (-1: all)")(
-      "quiet,q", "no progress output");
+      "record", po::value(&run.record),
+      "also write every frame the source produces to this MRPT rawlog (a live session, kept to "
+      "replay bit for bit with --input)")(
+      "live-queue", po::value(&run.live_queue)->default_value(2),
+      "live sources: frames that may wait for the stages; when they fall behind, the oldest is "
+      "dropped (counted in run.json)")("quiet,q", "no progress output");
   po::positional_options_description pos;
   pos.add("pipeline", 1);
   po::variables_map vm;
   if (!parseOptions("run", "PIPELINE.ini [options]", opts, pos, args, vm)) return 0;
   run.progress = !vm.count("quiet");
   run.point_labels = !vm.count("no-point-labels");
+  if (run.live_queue < 1) throw ConfigError("--live-queue: must be at least 1");
 
   PluginRegistry registry(PluginRegistry::defaultSearchPath(plugin_path));
   const PipelineConfig config = PipelineConfig::load(pipeline_file, ov, registry);

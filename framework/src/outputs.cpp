@@ -221,6 +221,13 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
       "  \"frames_read\": %zu,\n  \"frames_processed\": %zu,\n  \"frames_failed\": %zu,\n"
       "  \"entries_skipped\": %zu,\n  \"wall_time_s\": %.6f,\n  \"frames_per_second\": %.1f,\n",
       s.frames_read, s.frames_processed, s.frames_failed, s.entries_skipped, s.wall_time_s, fps);
+  std::fprintf(f,
+               "  \"live\": %s,\n  \"frames_dropped\": %zu,\n  \"frames_recorded\": %zu,\n"
+               "  \"latency_ms\": {\"frames\": %zu, \"mean\": %.6f, \"p50\": %.6f, \"p99\": %.6f, "
+               "\"max\": %.6f},\n",
+               s.live ? "true" : "false", s.frames_dropped, s.frames_recorded, s.latency.calls(),
+               s.latency.mean(), s.latency.percentile(50), s.latency.percentile(99),
+               s.latency.max());
   std::fprintf(f, "  \"stages\": [");
   for (std::size_t i = 0; i < s.stages.size(); ++i) {
     const StageStats& st = s.stages[i];

@@ -6,8 +6,10 @@
 #include <iostream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/frame_supply.h"
 #include "pedtrack/point_labels.h"
 #include "pedtrack/progress.h"
+#include "pedtrack/rawlog_recorder.h"
 
 namespace pedtrack {
 namespace {
@@ -104,24 +106,20 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   Progress progress("run", opt.progress);
   const auto start = Clock::now();
   std::size_t warnings = 0;
+  std::unique_ptr<RawlogRecorder> recorder;
+  if (!opt.record.empty()) recorder = std::make_unique<RawlogRecorder>(opt.record);
+  FrameSupply supply(*source_, opt, recorder.get());
+  sum.live = supply.live();
   Frame frame;
+  Clock::time_point arrival;
   while (!stopRequested()) {
-    if (opt.max_frames >= 0 && static_cast<long>(sum.frames_read) >= opt.max_frames) break;
-    frame = Frame();
-    frame.index = sum.frames_read;
-    auto t0 = Clock::now();
-    try {
-      if (!source_->next(frame)) break;
-    } catch (const std::exception& e) {
-      sum.status = "error";
-      sum.error = e.what();
-      break;
-    }
+    const auto t0 = Clock::now();
+    if (!supply.next(frame, arrival)) break;
+    // The source's time per frame; for a live source, how long the stages waited for data.
     sum.stages[0].add(msSince(t0));
-    ++sum.frames_read;
     bool ok = true;
     for (std::size_t i = 0; i < stages_.size() && ok; ++i) {
-      t0 = Clock::now();
+      const auto ts = Clock::now();
       try {
         stages_[i]->process(frame);
       } catch (const std::exception& e) {
@@ -132,7 +130,7 @@ RunSummary Pipeline::run(const RunOptions& opt) {
                     << "] " << e.what() << (warnings == 10 ? " (further warnings suppressed)" : "")
                     << "\n";
       }
-      sum.stages[i + 1].add(msSince(t0));
+      sum.stages[i + 1].add(msSince(ts));
     }
     if (!ok) {
       ++sum.frames_failed;
@@ -146,8 +144,21 @@ RunSummary Pipeline::run(const RunOptions& opt) {
       clusters_csv = std::make_unique<ClustersCsvWriter>(opt.out_dir + "/clusters.csv", frame);
     if (clusters_csv) clusters_csv->write(frame);
     if (labels) labels->write(runLabels(frame));
+    if (csv && supply.live()) csv->flush();  // a live frame's latency ends with its tracks on disk
+    sum.latency.add(msSince(arrival));
     ++sum.frames_processed;
-    progress.update(sum.frames_read, source_->progress());
+    progress.update(supply.framesRead(), source_->progress());
+  }
+  supply.stop();  // joins a live source's thread: it checks stopRequested() between reads
+  sum.frames_read = supply.framesRead();
+  sum.frames_dropped = supply.dropped();
+  if (!supply.error().empty()) {
+    sum.status = "error";
+    sum.error = supply.error();
+  }
+  if (recorder) {
+    sum.frames_recorded = recorder->written();
+    recorder->close();
   }
   if (stopRequested() && sum.status == "ok") sum.status = "interrupted";
   try {  // a plugin that cannot complete its side outputs fails the run, after the rest is out

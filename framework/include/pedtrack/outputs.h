@@ -16,6 +16,8 @@ class CsvStream {
   CsvStream(const std::string& path, const char* header);
   ~CsvStream();
   void close();
+  /// Puts every row written so far on disk now (a live run, each frame).
+  void flush() { out_.flush(); }
 
  protected:
   /// Call after the rows of a frame: flushes when a second has passed.
@@ -67,6 +69,11 @@ struct RunSummary {
   std::size_t frames_processed = 0;
   std::size_t frames_failed = 0;    ///< frames where a stage threw
   std::size_t entries_skipped = 0;  ///< bad input entries skipped by the source
+  bool live = false;                ///< the source was a live device, read on its own thread
+  std::size_t frames_dropped = 0;   ///< live: frames dropped because the stages fell behind
+  std::size_t frames_recorded = 0;  ///< frames written by --record
+  /// Per processed frame: from the source handing it over to its outputs written (ms).
+  StageStats latency{"latency", ""};
   double wall_time_s = 0;
   std::string status = "ok";  ///< ok | error | interrupted
   std::string error;

@@ -46,6 +46,10 @@ class Sensor : public Plugin {
   virtual double progress() const { return -1; }
   /// Bad input entries skipped so far (sources with a skip option), reported in run.json.
   virtual std::size_t entriesSkipped() const { return 0; }
+  /// A live device: data arrives whether or not the pipeline is ready. The pipeline then reads
+  /// the source on its own thread into a bounded queue and drops the oldest frames rather than
+  /// fall behind (next() is only ever called from that thread).
+  virtual bool live() const { return false; }
 };
 
 /// A processing stage: segmenters add clusters, classifiers detections, trackers tracks.

@@ -9,6 +9,7 @@
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -41,8 +42,15 @@ class RawlogSource : public Sensor {
       mrpt::serialization::CSerializable::Ptr obj = readEntry();
       if (!obj) return false;
       if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(obj)) {
-        for (const auto& o : *sf)
-          if (o && wanted(*o)) frame.observations.push_back(o);
+        for (const auto& o : *sf) {
+          // `pedtrack run --record` puts a frame's odometry beside its scans.
+          if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(o)) {
+            odometry_ = mrpt::poses::CPose3D(odo->odometry);
+            has_odometry_ = true;
+          } else if (o && wanted(*o)) {
+            frame.observations.push_back(o);
+          }
+        }
       } else if (auto acts = std::dynamic_pointer_cast<CActionCollection>(obj)) {
         applyActions(*acts);
       } else if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(obj)) {
@@ -52,8 +60,11 @@ class RawlogSource : public Sensor {
         if (wanted(*obs)) frame.observations.push_back(obs);
       }
       if (frame.observations.empty()) continue;
-      const CObservation& first = *frame.observations.front();
-      frame.t = mrpt::Clock::toDouble(first.timestamp);
+      // The newest observation's time, as the bag source does: a frame of several scanners is
+      // the robot when its last scan came in (and a recorded bag frame replays as it ran).
+      frame.t = -INFINITY;
+      for (const auto& o : frame.observations)
+        frame.t = std::max(frame.t, mrpt::Clock::toDouble(o->timestamp));
       frame.robot_pose = odometry_;
       frame.has_odometry = has_odometry_;
       for (const auto& o : frame.observations) {
