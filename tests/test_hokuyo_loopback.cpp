@@ -1,0 +1,330 @@
+// MRPT's own CHokuyoURG driver, through the mrpt_sensor source, against a fake Ethernet Hokuyo on
+// 127.0.0.1 (loopback_hokuyo.h) serving scans rendered by the simulator: the frames arrive intact,
+// a device that goes silent, is switched off or sends malformed scans is survived and reconnected,
+// and the leg pipeline tracks people from it live. Every run is bounded in frames and time.
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "loopback_hokuyo.h"
+#include "pedtrack/pipeline.h"
+#include "pedtrack/sim/simulator.h"
+#include "test_support.h"
+
+using namespace pedtrack;
+using namespace pedtrack::test;
+using Fault = LoopbackHokuyo::Fault;
+using Scans = std::vector<std::vector<float>>;
+
+namespace {
+
+const std::string kScenarios = std::string(PEDTRACK_SOURCE_DIR) + "/configs/scenarios/";
+
+// Scans `first` .. `first + count - 1` of a 768-beam leg scenario, as the device serves them:
+// metres per step, NaN where the simulated scanner had no return.
+Scans renderScans(const std::string& scenario, std::size_t first, std::size_t count) {
+  sim::Simulator simulator(sim::loadScenario(kScenarios + scenario));
+  simulator.setPointTruth(false);
+  Scans out;
+  sim::SimFrame f;
+  for (std::size_t k = 0; k < first + count && simulator.next(f); ++k) {
+    if (k < first) continue;
+    for (const auto& o : f.observations)
+      if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o)) {
+        std::vector<float> r(scan->getScanSize());
+        for (std::size_t i = 0; i < r.size(); ++i)
+          r[i] = scan->getScanRangeValidity(i) ? scan->getScanRange(i)
+                                               : std::numeric_limits<float>::quiet_NaN();
+        out.push_back(std::move(r));
+      }
+  }
+  return out;
+}
+
+// The device's pace: the 10 Hz scenarios three times faster, to keep the tests short.
+LoopbackHokuyo::Config fastDevice() {
+  LoopbackHokuyo::Config c;
+  c.speedup = 3;
+  return c;
+}
+
+// A [source] section for CHokuyoURG on the device: MRPT's own keys, as rawlog-grabber takes them.
+// The stream ends after `idle` s without data (the device ran out of scans) unless `extra` says
+// otherwise.
+std::string sourceSection(int port, const std::string& extra = "end_on_idle = true\n",
+                          double idle = 4) {
+  std::ostringstream s;
+  s << "[source]\nplugin = mrpt_sensor\ndriver = CHokuyoURG\nIP_DIR = 127.0.0.1\nPORT_DIR = "
+    << port
+    << "\nsensorLabel = HOKUYO_LOOP\nprocess_rate = 200\npose_z = 0.4\nidle_timeout = " << idle
+    << "\n"
+    << extra;
+  return s.str();
+}
+
+struct Run {
+  std::vector<Frame> frames;
+  std::map<std::string, long> counters;
+  double seconds = 0;
+};
+
+// Reads at most `max_frames` frames for at most `max_seconds` (the source itself gives up after
+// idle_timeout without data), then the source's counters.
+Run readFrames(const std::string& ini, std::size_t max_frames, double max_seconds) {
+  const auto cfg = PipelineConfig::fromText(ini, "hokuyo.ini", {}, testRegistry());
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  Run run;
+  {
+    Pipeline p(cfg);
+    Frame f;
+    while (run.frames.size() < max_frames && elapsed() < max_seconds && p.source().next(f))
+      run.frames.push_back(std::move(f)), f = Frame();
+    for (const auto& [name, value] : p.source().counters()) run.counters[name] = value;
+  }
+  run.seconds = elapsed();
+  return run;
+}
+
+const mrpt::obs::CObservation2DRangeScan* scanOf(const Frame& f) {
+  return f.observations.size() == 1
+             ? dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(f.observations[0].get())
+             : nullptr;
+}
+
+// Beams of the frame that differ from the served scan: validity, or range beyond SCIP's 1 mm.
+std::size_t mismatches(const Frame& f, const std::vector<float>& served) {
+  const auto* scan = scanOf(f);
+  if (!scan || scan->getScanSize() != served.size()) return served.size() + 1;
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < served.size(); ++i) {
+    const bool valid = std::isfinite(served[i]);
+    if (scan->getScanRangeValidity(i) != valid ||
+        (valid && std::abs(scan->getScanRange(i) - served[i]) > 0.0005 + 1e-6))
+      ++bad;
+  }
+  return bad;
+}
+
+// Which served scan each frame is (the first identical one after the previous frame's), -1 when
+// none: frames must come intact and in order.
+std::vector<long> servedIndices(const std::vector<Frame>& frames, const Scans& served) {
+  std::vector<long> idx;
+  std::size_t from = 0;
+  for (const auto& f : frames) {
+    long found = -1;
+    for (std::size_t j = from; j < served.size() && found < 0; ++j)
+      if (mismatches(f, served[j]) == 0) found = static_cast<long>(j);
+    idx.push_back(found);
+    if (found >= 0) from = static_cast<std::size_t>(found) + 1;
+  }
+  return idx;
+}
+
+std::vector<long> allBut(std::size_t n, const std::vector<long>& skip) {
+  std::vector<long> v;
+  for (long i = 0; i < static_cast<long>(n); ++i)
+    if (std::find(skip.begin(), skip.end(), i) == skip.end()) v.push_back(i);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("hokuyo loopback: CHokuyoURG reads the served scans intact", "[hokuyo][mrpt_sensor]") {
+  const Scans served = renderScans("legs_crowd_10.ini", 0, 40);
+  REQUIRE(served.size() == 40);
+  // The scans are worth comparing: people, clutter and walls in range, sky elsewhere.
+  std::size_t valid = 0, total = 0;
+  for (const auto& s : served)
+    for (float r : s) valid += std::isfinite(r), ++total;
+  REQUIRE(valid > total / 10);
+  REQUIRE(valid < total);
+
+  LoopbackHokuyo device(fastDevice(), served);
+  const Run run =
+      readFrames("[pipeline]\nstages = source\n" + sourceSection(device.port()), served.size(), 20);
+  INFO("read " << run.frames.size() << " frames in " << run.seconds << " s");
+  REQUIRE(run.frames.size() == served.size());
+  for (std::size_t k = 0; k < served.size(); ++k) {
+    INFO("frame " << k);
+    REQUIRE(scanOf(run.frames[k]) != nullptr);
+    CHECK(mismatches(run.frames[k], served[k]) == 0);
+  }
+  const auto* scan = scanOf(run.frames[0]);
+  CHECK(scan->sensorLabel == "HOKUYO_LOOP");
+  CHECK(scan->maxRange == Approx(11.0));                     // DMAX from PP
+  CHECK(scan->aperture == Approx(768 * 2 * M_PI / 1024.0));  // AMIN..AMAX of ARES, MRPT's way
+  CHECK(run.frames[0].sensor_pose.z() == Approx(0.4));       // MRPT's pose_z reached the driver
+  for (std::size_t k = 1; k < run.frames.size(); ++k) CHECK(run.frames[k].t > run.frames[k - 1].t);
+  CHECK(device.scansSent() == served.size());
+  CHECK(device.connections() == 1);
+  CHECK(run.counters.at("driver_errors") == 0);
+  CHECK(run.counters.at("reconnects") == 0);
+}
+
+TEST_CASE(
+    "hokuyo loopback: a device that stops answering or sends garbage is survived and "
+    "reconnected",
+    "[hokuyo][mrpt_sensor]") {
+  const Scans served = renderScans("legs_crowd_10.ini", 100, 30);
+  REQUIRE(served.size() == 30);
+  LoopbackHokuyo device(fastDevice(), served);
+  const std::string quick = "end_on_idle = true\nreconnect_after = 0.5\nreconnect_delay = 0.2\n";
+
+  SECTION("malformed scans are dropped, the stream goes on") {
+    device.addFault(Fault::Truncate, 8);
+    device.addFault(Fault::Garbage, 16);
+    const Run run = readFrames("[pipeline]\nstages = source\n" + sourceSection(device.port()),
+                               served.size() - 2, 20);
+    INFO("read " << run.frames.size() << " frames in " << run.seconds << " s");
+    CHECK(servedIndices(run.frames, served) == allBut(served.size(), {8, 16}));
+    CHECK(run.counters.at("driver_errors") >= 2);  // each bad scan put the driver in error
+    CHECK(device.faultsFired() == 2);
+    CHECK(device.connections() == 1);  // CHokuyoURG resynchronises on the next scan's echo
+  }
+
+  SECTION("SCIP sums are not checked by CHokuyoURG: a scan with wrong sums still arrives") {
+    // Recorded so that a driver that starts checking them shows up here.
+    device.addFault(Fault::BadChecksum, 5);
+    const Run run = readFrames("[pipeline]\nstages = source\n" + sourceSection(device.port()),
+                               served.size(), 20);
+    CHECK(servedIndices(run.frames, served) == allBut(served.size(), {}));
+    CHECK(device.faultsFired() == 1);
+  }
+
+  SECTION("a device that goes silent is re-created until it answers again") {
+    // The connection that went silent never streams again. The source's stall check (0.5 s here)
+    // re-creates the driver before CHokuyoURG's own missed-scan check would reconnect.
+    device.addFault(Fault::Silence, 10, 1.2);
+    const Run run = readFrames(
+        "[pipeline]\nstages = source\n" + sourceSection(device.port(), quick), served.size(), 25);
+    INFO("read " << run.frames.size() << " frames in " << run.seconds << " s");
+    CHECK(servedIndices(run.frames, served) == allBut(served.size(), {}));
+    CHECK(run.counters.at("stalls") >= 1);
+    CHECK(run.counters.at("reconnects") >= 1);
+    CHECK(device.connections() >= 2);
+    CHECK(device.streamsStarted() >= 2);
+  }
+
+  SECTION("a device switched off for a while is reconnected") {
+    // Connections are refused meanwhile: CHokuyoURG reports errors, then throws.
+    device.addFault(Fault::Drop, 10, 1.0);
+    const Run run = readFrames(
+        "[pipeline]\nstages = source\n" + sourceSection(device.port(), quick), served.size(), 25);
+    INFO("read " << run.frames.size() << " frames in " << run.seconds << " s");
+    CHECK(servedIndices(run.frames, served) == allBut(served.size(), {}));
+    CHECK(run.counters.at("driver_errors") >= 1);
+    CHECK(device.connections() >= 2);
+  }
+
+  SECTION("without reconnect a failing device ends the run with an error") {
+    device.addFault(Fault::Drop, 10, 30);  // refused connections: the driver's error state
+    CHECK_THROWS_WITH(readFrames("[pipeline]\nstages = source\n" +
+                                     sourceSection(device.port(), "reconnect = false\n"),
+                                 served.size(), 20),
+                      Catch::StartsWith("CHokuyoURG: "));
+  }
+}
+
+TEST_CASE("hokuyo loopback: a device still mute when the driver starts is waited for",
+          "[hokuyo][mrpt_sensor]") {
+  const Scans served = renderScans("legs_crowd_10.ini", 200, 20);
+  REQUIRE(served.size() == 20);
+  LoopbackHokuyo::Config cfg = fastDevice();
+  cfg.mute_first = 1.0;  // booting: commands are ignored for 1 s from the first connection
+  LoopbackHokuyo device(cfg, served);
+
+  SECTION("the source re-creates the driver until the device answers") {
+    const Run run =
+        readFrames("[pipeline]\nstages = source\n" +
+                       sourceSection(device.port(),
+                                     "end_on_idle = true\nreconnect_after = 0.5\nreconnect_delay = "
+                                     "0.2\n"),
+                   served.size(), 20);
+    INFO("read " << run.frames.size() << " frames in " << run.seconds << " s");
+    CHECK(servedIndices(run.frames, served) == allBut(served.size(), {}));
+    CHECK(run.counters.at("stalls") >= 1);
+    CHECK(run.counters.at("reconnects") >= 1);
+    CHECK(device.connections() >= 2);
+  }
+
+  SECTION("CHokuyoURG alone never starts the stream") {
+    // What the stall check is for: a driver whose start-up went unanswered waits for scans that
+    // were never asked for (it restarts only a stream it saw run), until idle_timeout.
+    const Run run = readFrames(
+        "[pipeline]\nstages = source\n" +
+            sourceSection(device.port(), "end_on_idle = true\nreconnect_after = 0\n", 2.5),
+        served.size(), 20);
+    CHECK(run.frames.empty());
+    CHECK(run.seconds > 2.5);
+    CHECK(device.streamsStarted() == 0);
+    CHECK(device.connections() == 1);
+  }
+}
+
+TEST_CASE("hokuyo loopback: tracks come out of a live leg pipeline", "[hokuyo][legs][pipeline]") {
+  // legs_standing_60s.ini from t = 6 s to 13 s: person 1, come in by the north door, walks to
+  // (3.5, 0.8) and stands still there from 9.2 s; person 2 crosses the room at x = 7.
+  const Scans served = renderScans("legs_standing_60s.ini", 60, 70);
+  REQUIRE(served.size() == 70);
+  // In real time (10 Hz), as the device would send them.
+  LoopbackHokuyo device(LoopbackHokuyo::Config(), served);
+
+  // configs/people_2d_legs.ini with the device in place of its simulated [source].
+  std::string ini = readFile(std::string(PEDTRACK_SOURCE_DIR) + "/configs/people_2d_legs.ini");
+  const auto src = ini.find("\n[source]") + 1;  // the section, not the comment naming it
+  REQUIRE(src != 0);
+  ini.replace(src, ini.find("\n[", src) + 1 - src, sourceSection(device.port()));
+  const auto model = ini.find("../models/");
+  REQUIRE(model != std::string::npos);
+  ini.replace(model, 3, std::string(PEDTRACK_SOURCE_DIR) + "/");
+  const std::string dir = freshDir("hokuyo_loopback_legs");
+  writeFile(dir + "/people_2d_legs_hokuyo.ini", ini);
+
+  // A queue deep enough that no frame is dropped: what is tracked does not depend on the load.
+  const auto r = runHost({"run", dir + "/people_2d_legs_hokuyo.ini", "--out", dir + "/out", "-q",
+                          "--max-frames", std::to_string(served.size()), "--live-queue", "100"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const std::string json = readFile(dir + "/out/run.json");
+  INFO(json);
+  CHECK(jsonValue(json, "frames_processed") >= 0.9 * served.size());
+  CHECK(jsonValue(json, "driver_errors") == 0);
+
+  // tracks.csv: t,frame,track,x,y,... and the status 17th. The standing person has one
+  // confirmed track over the last 10 frames read (the last second of the scenario).
+  const auto rows = lines(readFile(dir + "/out/tracks.csv"));
+  REQUIRE(rows.size() > 1);
+  struct Row {
+    long frame;
+    double x, y;
+    std::string track, status;
+  };
+  std::vector<Row> tracks;
+  long last_frame = -1;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    std::vector<std::string> c;
+    std::stringstream ss(rows[i]);
+    for (std::string cell; std::getline(ss, cell, ',');) c.push_back(cell);
+    REQUIRE(c.size() >= 18);
+    tracks.push_back({std::stol(c[1]), std::stod(c[3]), std::stod(c[4]), c[2], c[17]});
+    last_frame = std::max(last_frame, tracks.back().frame);
+  }
+  CHECK(last_frame >= static_cast<long>(0.9 * served.size()));
+  std::map<std::string, int> near_stander;
+  for (const auto& row : tracks)
+    if (row.status == "confirmed" && row.frame > last_frame - 10 &&
+        std::hypot(row.x - 3.5, row.y - 0.8) < 0.35)
+      ++near_stander[row.track];
+  INFO(near_stander.size() << " confirmed tracks near the standing person");
+  REQUIRE(near_stander.size() == 1);
+  CHECK(near_stander.begin()->second >= 7);  // in (nearly) every one of those frames
+}
