@@ -26,27 +26,13 @@ int runCommand(const std::vector<std::string>& args) {
       "input", po::value(&ov.input),
       "replay this .rawlog or .bag, or simulate this scenario .ini, instead of the pipeline's "
       "source")("topic", po::value(&ov.topic), "bag topic(s) to replay with --input (comma list)")(
-      "set", po::value(&ov.sets)->composing(), "override a key: section.key=value (repeatable)")(
-      "out", po::value(&run.out_dir),
-      "directory for tracks.csv, run.json and the stages' side outputs (detections.csv, "
-      "clusters.csv, point_labels.bin)")(
-      "no-point-labels", "with --out: do not write point_labels.bin (every point's label)")(
-      "plugin-path", po::value(&plugin_path)->composing(),
-      "extra plugin directory (repeatable, searched first)")(
-      "max-frames", po::value(&run.max_frames)->default_value(-1), "stop after N frames (-1: all)")(
-      "record", po::value(&run.record),
-      "also write every frame the source produces to this MRPT rawlog (a live session, kept to "
-      "replay bit for bit with --input)")(
-      "live-queue", po::value(&run.live_queue)->default_value(2),
-      "live sources: frames that may wait for the stages; when they fall behind, the oldest is "
-      "dropped (counted in run.json)")("quiet,q", "no progress output");
+      "set", po::value(&ov.sets)->composing(), "override a key: section.key=value (repeatable)");
+  addRunOptions(opts, run, plugin_path);
   po::positional_options_description pos;
   pos.add("pipeline", 1);
   po::variables_map vm;
   if (!parseOptions("run", "PIPELINE.ini [options]", opts, pos, args, vm)) return 0;
-  run.progress = !vm.count("quiet");
-  run.point_labels = !vm.count("no-point-labels");
-  if (run.live_queue < 1) throw ConfigError("--live-queue: must be at least 1");
+  readRunOptions(vm, run);
 
   PluginRegistry registry(PluginRegistry::defaultSearchPath(plugin_path));
   const PipelineConfig config = PipelineConfig::load(pipeline_file, ov, registry);

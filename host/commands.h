@@ -6,6 +6,8 @@ namespace pedtrack::cli {
 
 // Each subcommand takes the arguments after its name and returns the process exit code.
 int runCommand(const std::vector<std::string>& args);
+/// `pedtrack ros`: the pipeline as a ROS1 node (ros_topic source, ros_publish stage).
+int rosCommand(const std::vector<std::string>& args);
 int pluginsCommand(const std::vector<std::string>& args);
 int importCommand(const std::vector<std::string>& args);
 int benchCommand(const std::vector<std::string>& args);

@@ -18,6 +18,7 @@ const char* kUsage =
     "\n"
     "commands:\n"
     "  run PIPELINE.ini   run a pipeline (--input FILE replays a rawlog or bag through it)\n"
+    "  ros PIPELINE.ini   run a pipeline as a ROS1 node: scans from topics, tracks published\n"
     "  plugins [NAME]     list plugins, or show every parameter of one\n"
     "  import INPUT       convert a ROS1 bag or rawlog to a rawlog (--topic selects topics)\n"
     "  sim SCENARIO.ini   simulate a scene into a rawlog plus truth.csv\n"
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
     if (cmd == "run") return cli::runCommand(args);
+    if (cmd == "ros") return cli::rosCommand(args);
     if (cmd == "plugins") return cli::pluginsCommand(args);
     if (cmd == "import") return cli::importCommand(args);
     if (cmd == "bench") return cli::benchCommand(args);

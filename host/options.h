@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "pedtrack/pipeline.h"
+
 namespace pedtrack::cli {
 
 namespace po = boost::program_options;
@@ -14,5 +16,12 @@ bool parseOptions(const std::string& command, const std::string& synopsis,
                   const po::options_description& options,
                   const po::positional_options_description& positional,
                   const std::vector<std::string>& args, po::variables_map& vm);
+
+/// The options `pedtrack run` and `pedtrack ros` share: --out, --no-point-labels, --plugin-path,
+/// --max-frames, --record, --live-queue, --quiet. Read them back with readRunOptions().
+void addRunOptions(po::options_description& options, RunOptions& run,
+                   std::vector<std::string>& plugin_path);
+/// The flags of addRunOptions() into `run`; ConfigError for a --live-queue below 1.
+void readRunOptions(const po::variables_map& vm, RunOptions& run);
 
 }  // namespace pedtrack::cli

@@ -11,6 +11,8 @@ packages=(
   libnanoflann-dev                             # k-NN KD-tree (also pulled in by libmrpt-dev)
   librosbag-storage-dev libmrpt-ros1bridge-dev  # ROS1 bag replay
   libtf2-dev libtf2-msgs-dev libsensor-msgs-dev libnav-msgs-dev
+  ros-core libroscpp-dev libtf2-ros-dev        # `pedtrack ros` (roscore and rosbag play for its test)
+  libvisualization-msgs-dev libgeometry-msgs-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,5 +1,8 @@
 #include "pedtrack/text.h"
 
+#include <algorithm>
+#include <iostream>
+
 namespace pedtrack {
 
 std::string trim(const std::string& s) {
@@ -42,6 +45,12 @@ std::string oneLine(const std::string& what) {
     }
   }
   return last.empty() ? trim(what) : last;
+}
+
+void WarnOnce::operator()(const std::string& message) {
+  if (std::find(seen_.begin(), seen_.end(), message) != seen_.end()) return;
+  seen_.push_back(message);
+  std::cerr << "warning: " << prefix_ << message << "\n";
 }
 
 }  // namespace pedtrack

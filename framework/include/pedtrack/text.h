@@ -12,4 +12,16 @@ std::vector<std::string> splitList(const std::string& s);
 /// and call trace around their "Message:" line; other multi-line texts give their last line.
 std::string oneLine(const std::string& what);
 
+/// Prints "warning: <prefix><message>" on stderr the first time each message is given: input
+/// that is wrong the same way in every frame is reported once, not thousands of times.
+class WarnOnce {
+ public:
+  explicit WarnOnce(std::string prefix = std::string()) : prefix_(std::move(prefix)) {}
+  void operator()(const std::string& message);
+
+ private:
+  std::string prefix_;
+  std::vector<std::string> seen_;
+};
+
 }  // namespace pedtrack

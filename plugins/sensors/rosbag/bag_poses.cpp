@@ -17,16 +17,12 @@
 #include "pedtrack/text.h"
 
 namespace pedtrack::rosbag_source {
-namespace {
-
 mrpt::poses::CPose3D toPose(const geometry_msgs::TransformStamped& t) {
   const auto& q = t.transform.rotation;
   const auto& p = t.transform.translation;
   return mrpt::poses::CPose3D(
       mrpt::poses::CPose3DQuat(p.x, p.y, p.z, mrpt::math::CQuaternionDouble(q.w, q.x, q.y, q.z)));
 }
-
-}  // namespace
 
 MountTable parseMounts(const std::string& text, const std::string& where) {
   MountTable out;
@@ -112,33 +108,36 @@ bool BagPoses::odomAt(const ros::Time& t, mrpt::poses::CPose3D& out) const {
   return true;
 }
 
-void BagPoses::warnOnce(const std::string& msg) {
-  if (std::find(warned_.begin(), warned_.end(), msg) != warned_.end()) return;
-  warned_.push_back(msg);
-  std::cerr << "warning: " << msg << "\n";
+void resolveMount(bool from_tf, const MountTable& mounts, const std::string& topic,
+                  const std::string& base_frame, const std::string& sensor_frame,
+                  bool warn_unmounted, WarnOnce& warn, mrpt::poses::CPose3D& mount,
+                  std::string& base) {
+  base = base_frame;
+  if (from_tf) return;
+  const auto ini = mounts.find(topic);
+  if (ini != mounts.end()) {
+    mount = ini->second;  // relative to the robot body: the robot pose is still fixed ← base
+    return;
+  }
+  mount = mrpt::poses::CPose3D();
+  base = sensor_frame;
+  if (warn_unmounted)
+    warn("topic '" + topic + "': neither /tf ('" + base_frame + "' to '" + sensor_frame +
+         "') nor `mounts` places the sensor on the robot: its mount is taken as the identity");
 }
 
 bool BagPoses::lookup(const std::string& sensor_frame, const std::string& topic,
                       const ros::Time& stamp, mrpt::poses::CPose3D& robot,
                       mrpt::poses::CPose3D& mount) {
-  std::string base = base_;
   // Mounting transforms are static in practice: accept the latest when the stamp misses.
   const bool from_tf =
       tryTf(base_, sensor_frame, stamp, mount) || tryTf(base_, sensor_frame, ros::Time(0), mount);
-  const auto ini = mounts_.find(topic);
-  if (!from_tf && ini != mounts_.end()) {
-    mount = ini->second;  // relative to the robot body: the robot pose is still fixed ← base
-  } else if (!from_tf) {
-    mount = mrpt::poses::CPose3D();
-    base = sensor_frame;
-    if (warn_unmounted_)
-      warnOnce("topic '" + topic + "': neither /tf ('" + base_ + "' to '" + sensor_frame +
-               "') nor `mounts` places the sensor on the robot: its mount is taken as the "
-               "identity");
-    else if (tf_count_ > 0 && sensor_frame != base_)
-      warnOnce("no tf from '" + base_ + "' to sensor frame '" + sensor_frame +
-               "': the sensor frame is taken as the robot frame");
-  }
+  std::string base;
+  resolveMount(from_tf, mounts_, topic, base_, sensor_frame, warn_unmounted_, warn_, mount, base);
+  if (!from_tf && !warn_unmounted_ && base == sensor_frame && tf_count_ > 0 &&
+      sensor_frame != base_)
+    warn_("no tf from '" + base_ + "' to sensor frame '" + sensor_frame +
+          "': the sensor frame is taken as the robot frame");
   if (tryTf(fixed_, base, stamp, robot)) {
     last_robot_ = robot;
     robot_known_ = true;
@@ -148,10 +147,10 @@ bool BagPoses::lookup(const std::string& sensor_frame, const std::string& topic,
   } else {
     robot = last_robot_;
     if (tf_count_ == 0 && odom_.empty())
-      warnOnce("the bag has neither /tf nor odometry: the sensor is taken as static");
+      warn_("the bag has neither /tf nor odometry: the sensor is taken as static");
     else
-      warnOnce("no tf from '" + fixed_ + "' to '" + base +
-               "' at some scans: the last known pose is used");
+      warn_("no tf from '" + fixed_ + "' to '" + base +
+            "' at some scans: the last known pose is used");
   }
   return robot_known_;
 }

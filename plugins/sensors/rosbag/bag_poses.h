@@ -1,6 +1,7 @@
 #pragma once
 // Robot poses from a bag's /tf (+ /tf_static) and, where tf has no fixed→base link, its
 // nav_msgs/Odometry topic. Everything is read once up front: tf data is small next to scans.
+#include <geometry_msgs/TransformStamped.h>
 #include <mrpt/poses/CPose3D.h>
 #include <rosbag/bag.h>
 #include <tf2/buffer_core.h>
@@ -11,7 +12,12 @@
 #include <utility>
 #include <vector>
 
+#include "pedtrack/text.h"
+
 namespace pedtrack::rosbag_source {
+
+/// A tf transform as an MRPT pose.
+mrpt::poses::CPose3D toPose(const geometry_msgs::TransformStamped& t);
 
 /// Mounting poses on the robot by topic, from the INI `mounts` key.
 using MountTable = std::map<std::string, mrpt::poses::CPose3D>;
@@ -19,6 +25,16 @@ using MountTable = std::map<std::string, mrpt::poses::CPose3D>;
 /// Parses `topic: x y z yaw_deg [pitch_deg [roll_deg]]` entries separated by ';' (m, degrees).
 /// ConfigError starting with `where` and naming the bad entry for anything else.
 MountTable parseMounts(const std::string& text, const std::string& where);
+
+/// Where a sensor sits on the robot, by the rules the bag and live ROS sources share: /tf's
+/// mount when `from_tf`, else the topic's `mounts` entry, else the identity, in which case
+/// `base` becomes the sensor's own frame (the robot pose is then looked up for the sensor).
+/// `warn` is told once when neither placed a sensor that is merged with others
+/// (`warn_unmounted`: an identity mount puts one scanner on top of another).
+void resolveMount(bool from_tf, const MountTable& mounts, const std::string& topic,
+                  const std::string& base_frame, const std::string& sensor_frame,
+                  bool warn_unmounted, WarnOnce& warn, mrpt::poses::CPose3D& mount,
+                  std::string& base);
 
 class BagPoses {
  public:
@@ -42,7 +58,6 @@ class BagPoses {
   bool tryTf(const std::string& target, const std::string& source, const ros::Time& t,
              mrpt::poses::CPose3D& out) const;
   bool odomAt(const ros::Time& t, mrpt::poses::CPose3D& out) const;
-  void warnOnce(const std::string& msg);
 
   std::string fixed_, base_;
   MountTable mounts_;
@@ -52,7 +67,7 @@ class BagPoses {
   std::vector<std::pair<ros::Time, mrpt::poses::CPose3D>> odom_;  // sorted by time
   mrpt::poses::CPose3D last_robot_;
   bool robot_known_ = false;  // a robot pose has come from tf or odometry
-  std::vector<std::string> warned_;
+  WarnOnce warn_;
 };
 
 }  // namespace pedtrack::rosbag_source
