@@ -166,7 +166,15 @@ class LegPeople : public Tracker {
         continue;
       pts.push_back(q);
     }
-    const mrpt::poses::CPose3D ego(odometry_->update(pts, f.t));
+    const mrpt::poses::CPose2D matched = odometry_->update(pts, f.t);
+    // auto: a scanner that has not moved stays exactly where it started. Scan matching jitters
+    // by 2-3 cm on a standing scanner, which blurs the static scene and costs tracks; the
+    // matched pose is used from the moment the robot has clearly moved (and from then on).
+    if (scan_odometry_ == "on" || matched.norm() > kMovedDistance ||
+        std::abs(matched.phi()) > kMovedAngle)
+      moved_ = true;
+    const mrpt::poses::CPose3D ego =
+        moved_ ? mrpt::poses::CPose3D(matched) : mrpt::poses::CPose3D();
     const mrpt::poses::CPose3D robot = ego + f.robot_pose;
     const mrpt::poses::CPose3D old_inv = -f.robot_pose;  // sensor poses -> their mounts
     f.sensor_pose = robot + (old_inv + f.sensor_pose);
@@ -215,7 +223,10 @@ class LegPeople : public Tracker {
   LegPeopleTracker tracker_;
   std::optional<StaticScene> scene_;
   std::optional<ScanOdometry> odometry_;
-  mrpt::poses::CPose3D last_robot_;               // the last frame's scan-matched robot pose
+  mrpt::poses::CPose3D last_robot_;  // the last frame's scan-matched robot pose
+  bool moved_ = false;               // scan matching has seen the robot leave where it started
+  // Beyond the matcher's jitter on a standing scanner (2-3 cm, a fraction of a degree).
+  static constexpr double kMovedDistance = 0.1, kMovedAngle = 3.0 * M_PI / 180;
   static constexpr double kPersonR2 = 0.5 * 0.5;  // m², a person's legs and a step around them
   std::string scan_odometry_;                     // auto, on or off
   bool report_tentative_;
@@ -275,7 +286,8 @@ PluginDescriptor describe() {
                         "keyframes), tracked in that frame so walls stand still on a robot "
                         "without odometry (robot poses in outputs become it). auto: only while "
                         "the source gives no odometry (a bag without /tf or /odom, a lone live "
-                        "scanner); on: always; off: never (a scanner known to stand still)"),
+                        "scanner), and only once the match has moved 0.1 m or 3 deg from the "
+                        "start (a standing scanner stays exact); on: always; off: never"),
       ParamSpec::real("report_coast", 0.5, "s", 0, 3600,
                       "a person unseen longer than this is no longer written (kept until "
                       "max_coast, so their legs can be re-acquired behind an occlusion)"),
