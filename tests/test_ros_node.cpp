@@ -1,7 +1,7 @@
 // `pedtrack ros` against a real ROS1 graph: a roscore on a free loopback port, the leg_tracker
-// demo bag (and a bag of simulated scans, which CI has without the shared data) played into it
-// with `rosbag play`, and this test subscribed (roscpp) to what the node
-// publishes. Every scan must come out as one PoseArray (plus a people cloud and a MarkerArray)
+// demo bag (and bags of simulated LaserScans and VLP-16 PointCloud2s, which CI has without the
+// shared data) played into it with `rosbag play`, and this test subscribed (roscpp) to what the
+// node publishes. Every scan must come out as one PoseArray (plus a people cloud and a MarkerArray)
 // stamped with the scan's time, in the configured frame, carrying the same tracks as
 // `pedtrack run` of the same bag. Every child process is killed when the test ends, also on
 // failure. ros::init runs once per process: ctest runs each case in a process of its own.
@@ -9,6 +9,7 @@
 #include <geometry_msgs/PoseArray.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/ros1bridge/laser_scan.h>
+#include <mrpt/ros1bridge/point_cloud2.h>
 #include <netinet/in.h>
 #include <ros/ros.h>
 #include <rosbag/bag.h>
@@ -31,6 +32,7 @@
 #include <sstream>
 #include <thread>
 
+#include "pedtrack/frame.h"
 #include "pedtrack/sim/simulator.h"
 #include "test_support.h"
 
@@ -186,24 +188,40 @@ const std::vector<RefTrack>* refAt(const std::map<double, std::vector<RefTrack>>
   return &none;
 }
 
-// Plays `bag` (LaserScan on /scan) into a private ROS graph running `pedtrack ros` and checks
-// every scan against `pedtrack run` of the same bag (`min_scans`: how many the bag has at least).
-void checkNodeAgainstRun(const std::string& bag, std::size_t min_scans, const std::string& tag,
-                         bool expect_following) {
+// What a run plays and expects: the bag's scans are on `topic` (PointCloud2 when `cloud`, else
+// LaserScan), run through `pipeline`; `min_scans`: how many the bag has at least;
+// `expect_following`: the pipeline follows the nearest person (leg_people's `follow`) and
+// someone is followed.
+struct NodeCase {
+  std::string bag, tag, pipeline = "people_2d_legs.ini", topic = "/scan";
+  std::size_t min_scans = 1;
+  bool cloud = false, expect_following = false;
+};
+
+// Plays the case's bag into a private ROS graph running `pedtrack ros` and checks every scan
+// against `pedtrack run` of the same bag.
+void checkNodeAgainstRun(const NodeCase& c) {
+  const std::string& bag = c.bag;
+  const std::vector<std::string> follow =
+      c.expect_following ? std::vector<std::string>{"--set", "track.follow=nearest"}
+                         : std::vector<std::string>{};
   const auto t0 = Clock::now();
   REQUIRE(runShell("command -v roscore && command -v rosbag").exit_code == 0);
 
   // The reference: the same pipeline replaying the bag.
-  const std::string dir = freshDir(tag);
-  const auto ref_run = runHost({"run", kConfigs + "people_2d_legs.ini", "--input", bag, "--set",
-                                "track.follow=nearest", "--out", dir + "/ref", "-q"});
+  const std::string dir = freshDir(c.tag);
+  std::vector<std::string> ref_args{
+      "run",   kConfigs + c.pipeline, "--input", bag, "--topic", c.topic,
+      "--out", dir + "/ref",          "-q"};
+  ref_args.insert(ref_args.end(), follow.begin(), follow.end());
+  const auto ref_run = runHost(ref_args);
   INFO(ref_run.output);
   REQUIRE(ref_run.exit_code == 0);
   const std::string ref_csv = readFile(dir + "/ref/tracks.csv");
   const auto ref = tracksByTime(ref_csv);
   const auto scans_in_bag =
       static_cast<std::size_t>(jsonNumber(readFile(dir + "/ref/run.json"), "frames_read"));
-  REQUIRE(scans_in_bag >= min_scans);
+  REQUIRE(scans_in_bag >= c.min_scans);
 
   // A private ROS graph: its own master port, home and logs; loopback only.
   const int port = freePort();
@@ -229,11 +247,17 @@ void checkNodeAgainstRun(const std::string& bag, std::size_t min_scans, const st
   Received got;
   ros::NodeHandle nh;
   const std::uint32_t q = 5000;  // this test must not drop what it counts
-  auto scan_sub = nh.subscribe<sensor_msgs::LaserScan>(
-      "/scan", q, [&](const sensor_msgs::LaserScan::ConstPtr& m) {
-        std::lock_guard<std::mutex> lk(got.m);
-        got.scans.push_back(m->header.stamp);
-      });
+  auto on_scan = [&](const ros::Time& stamp) {
+    std::lock_guard<std::mutex> lk(got.m);
+    got.scans.push_back(stamp);
+  };
+  ros::Subscriber scan_sub =
+      c.cloud ? nh.subscribe<sensor_msgs::PointCloud2>(
+                    c.topic, q,
+                    [&](const sensor_msgs::PointCloud2::ConstPtr& m) { on_scan(m->header.stamp); })
+              : nh.subscribe<sensor_msgs::LaserScan>(
+                    c.topic, q,
+                    [&](const sensor_msgs::LaserScan::ConstPtr& m) { on_scan(m->header.stamp); });
   auto tracks_sub = nh.subscribe<geometry_msgs::PoseArray>(
       "/pedtrack/tracks", q, [&](const geometry_msgs::PoseArray::ConstPtr& m) {
         std::lock_guard<std::mutex> lk(got.m);
@@ -255,27 +279,26 @@ void checkNodeAgainstRun(const std::string& bag, std::size_t min_scans, const st
   // The node ends by itself 4 s after the last scan (end_on_idle). Its queues are deep (2000
   // messages, 200 frames: 25 s of the sped-up bag) so that a loaded machine delays scans rather
   // than drops them: every scan must come out.
-  Child node({PEDTRACK_BIN,
-              "ros",
-              kConfigs + "people_2d_legs.ini",
-              "--topic",
-              "/scan",
-              "--set",
-              "source.idle_timeout=4",
-              "--set",
-              "source.end_on_idle=true",
-              "--set",
-              "track.follow=nearest",
-              "--set",
-              std::string("publish.frame_id=") + kFrameId,
-              "--set",
-              "source.queue_size=2000",
-              "--live-queue",
-              "200",
-              "--out",
-              dir + "/node",
-              "-q"},
-             dir + "/node.log");
+  std::vector<std::string> node_args{PEDTRACK_BIN,
+                                     "ros",
+                                     kConfigs + c.pipeline,
+                                     "--topic",
+                                     c.topic,
+                                     "--set",
+                                     "source.idle_timeout=4",
+                                     "--set",
+                                     "source.end_on_idle=true",
+                                     "--set",
+                                     std::string("publish.frame_id=") + kFrameId,
+                                     "--set",
+                                     "source.queue_size=2000",
+                                     "--live-queue",
+                                     "200",
+                                     "--out",
+                                     dir + "/node",
+                                     "-q"};
+  node_args.insert(node_args.end(), follow.begin(), follow.end());
+  Child node(node_args, dir + "/node.log");
   // Its publishers appear once its source has subscribed (plugins are created in stage order),
   // and this test is connected to them before the first scan.
   const auto up_deadline = Clock::now() + std::chrono::seconds(30);
@@ -361,7 +384,7 @@ void checkNodeAgainstRun(const std::string& bag, std::size_t min_scans, const st
   CHECK(stamps_equal == got.scans.size());
   CHECK(tracks_equal == got.scans.size());
   CHECK(following == ref_following);
-  if (expect_following) CHECK(following > 0);
+  if (c.expect_following) CHECK(following > 0);
   std::size_t poses = 0;
   for (const auto& pa : got.tracks) poses += pa.poses.size();
   CHECK(poses > got.scans.size() / 4);  // people were tracked, not only nothing compared
@@ -392,6 +415,28 @@ std::string writeSimulatedBag(const std::string& path, int scans) {
   return path;
 }
 
+// A bag of simulated VLP-16 revolutions (crowd.ini: 20 walkers) as PointCloud2 messages, the
+// points of each revolution in the sensor's frame.
+std::string writeSimulatedCloudBag(const std::string& path, int revolutions) {
+  pedtrack::sim::Simulator sim(pedtrack::sim::loadScenario(kConfigs + "scenarios/crowd.ini"));
+  sim.setPointTruth(false);
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  pedtrack::sim::SimFrame f;
+  for (int i = 0; i < revolutions && sim.next(f); ++i) {
+    pedtrack::Frame frame;
+    frame.observations.push_back(f.observations.back());
+    std_msgs::Header header;
+    header.stamp = ros::Time(f.t);
+    header.frame_id = "velodyne";
+    header.seq = static_cast<std::uint32_t>(i);
+    sensor_msgs::PointCloud2 msg;
+    REQUIRE(mrpt::ros1bridge::toROS(frame.cloud(), header, msg));
+    bag.write("/velodyne_points", header.stamp, msg);
+  }
+  bag.close();
+  return path;
+}
+
 }  // namespace
 
 TEST_CASE("pedtrack ros publishes the tracks of every scan played from a bag, as pedtrack run") {
@@ -399,11 +444,30 @@ TEST_CASE("pedtrack ros publishes the tracks of every scan played from a bag, as
   const std::string bag =
       data.empty() ? "" : data + "/leg_tracker/demo_stationary_simple_environment.bag";
   requireData(bag);
-  checkNodeAgainstRun(bag, 1000, "ros_node", true);
+  NodeCase c;
+  c.bag = bag;
+  c.tag = "ros_node";
+  c.min_scans = 1000;
+  c.expect_following = true;
+  checkNodeAgainstRun(c);
 }
 
 TEST_CASE("pedtrack ros publishes the tracks of every simulated scan, as pedtrack run") {
-  const std::string dir = freshDir("ros_node_sim_bag");
+  NodeCase c;
+  c.bag = writeSimulatedBag(freshDir("ros_node_sim_bag") + "/legs.bag", 200);
+  c.tag = "ros_node_sim";
+  c.min_scans = 200;
   // Nobody is in the follow zone in front of the scanner here: following is not checked.
-  checkNodeAgainstRun(writeSimulatedBag(dir + "/legs.bag", 200), 200, "ros_node_sim", false);
+  checkNodeAgainstRun(c);
+}
+
+TEST_CASE("pedtrack ros tracks PointCloud2 revolutions of a simulated VLP-16, as pedtrack run") {
+  NodeCase c;
+  c.bag = writeSimulatedCloudBag(freshDir("ros_node_cloud_bag") + "/vlp16.bag", 40);
+  c.tag = "ros_node_cloud";
+  c.pipeline = "people_3d_vlp16.ini";
+  c.topic = "/velodyne_points";
+  c.cloud = true;
+  c.min_scans = 40;
+  checkNodeAgainstRun(c);
 }
