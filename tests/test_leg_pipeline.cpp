@@ -26,16 +26,6 @@ std::set<std::string> trackIds(const std::string& csv) {
   return ids;
 }
 
-std::string evalJson(const std::string& dir, std::vector<std::string> extra = {}) {
-  std::vector<std::string> args{"eval",     "--truth",           dir + "/truth.csv",
-                                "--tracks", dir + "/tracks.csv", "--json"};
-  args.insert(args.end(), extra.begin(), extra.end());
-  const auto e = runHost(args);
-  INFO(e.output);
-  REQUIRE(e.exit_code == 0);
-  return e.output;
-}
-
 }  // namespace
 
 TEST_CASE("people_2d_legs.ini keeps a person who stands still for 60 s on one track",
@@ -47,10 +37,10 @@ TEST_CASE("people_2d_legs.ini keeps a person who stands still for 60 s on one tr
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   // Measured: one track from 5.4 to 75.8 s, MOTA 0.976, no ID switch, no false positive.
-  const std::string stander = evalJson(dir, {"--following", "1"});
+  const std::string stander = evalRunJson(dir, {"--following", "1"});
   CHECK(jsonNumber(stander, "mota") >= 0.9);
   CHECK(jsonNumber(stander, "id_switches") == 0);
-  CHECK(jsonNumber(evalJson(dir), "false_positives") <= 10);
+  CHECK(jsonNumber(evalRunJson(dir), "false_positives") <= 10);
   // The simulator gives odometry (a standing scanner's), so scan_odometry = auto stays off.
   CHECK(readFile(dir + "/run.json").find("scan_matches") == std::string::npos);
 }
@@ -61,7 +51,7 @@ TEST_CASE("people_2d_legs.ini tracks the 10-person leg-height crowd", "[legs][pi
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   // Measured: MOTA 0.730, MOTP 0.069 m, 41 ID switches (README "Leg-height tracking").
-  const std::string e = evalJson(dir);
+  const std::string e = evalRunJson(dir);
   CHECK(jsonNumber(e, "mota") >= 0.68);
   CHECK(jsonNumber(e, "motp_m") <= 0.08);
   CHECK(jsonNumber(e, "id_switches") <= 60);

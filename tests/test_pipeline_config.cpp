@@ -101,6 +101,32 @@ TEST_CASE("set overrides, and input replaces the source", "[config]") {
   CHECK(errorOf(source(""), in) == "--topic: only a .bag input has topics ('" + in.input + "')");
 }
 
+TEST_CASE("a source plugin override keeps the keys it declares; a stage is appended once",
+          "[config]") {
+  // `pedtrack ros` swaps the source and appends its publisher this way.
+  PipelineOverrides ov;
+  ov.source_plugin = "mrpt_sensor";
+  ov.sets = {"source.driver=CHokuyoURG", "source.idle_timeout=3"};
+  ov.append_stage = {"band", "height_band"};
+  auto cfg = parse(source("skip_bad = true\n"), ov);
+  REQUIRE(cfg.stages.size() == 2);
+  CHECK(cfg.stages[0].descriptor->name == "mrpt_sensor");
+  CHECK(cfg.stages[0].params.getDouble("idle_timeout") == 3);
+  CHECK(cfg.ini->read_string("source", "file", "") == "");  // rawlog's keys are gone
+  CHECK(cfg.ini->read_string("source", "skip_bad", "") == "");
+  CHECK(cfg.stages[1].section == "band");
+  CHECK(cfg.stages[1].descriptor->name == "height_band");
+  CHECK(cfg.ini->read_string("pipeline", "stages", "") == "source band");
+  // A section of that name is taken: the stage gets another; a stage of that plugin: none.
+  cfg = parse(source("[band]\nplugin = height_band\n"), ov);
+  CHECK(cfg.stages.size() == 2);
+  CHECK(cfg.stages[1].section == "band_height_band");
+  ov.sets.push_back("pipeline.stages=source band");
+  cfg = parse(source("[band]\nplugin = height_band\n"), ov);
+  REQUIRE(cfg.stages.size() == 2);
+  CHECK(cfg.stages[1].section == "band");
+}
+
 TEST_CASE("environment variables expand; unknown ones are named", "[config]") {
   setenv("PEDTRACK_TEST_DATASETS", "/usr/share/mrpt/datasets", 1);
   const auto cfg = parse(

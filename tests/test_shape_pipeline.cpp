@@ -25,13 +25,7 @@ std::string runAndEval(const std::string& name, const std::string& scenario,
   const auto r = runHost(run);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  std::vector<std::string> ev{"eval",     "--truth",           dir + "/truth.csv",
-                              "--tracks", dir + "/tracks.csv", "--json"};
-  ev.insert(ev.end(), eval_extra.begin(), eval_extra.end());
-  const auto e = runHost(ev);
-  INFO(e.output);
-  REQUIRE(e.exit_code == 0);
-  return e.output;
+  return evalRunJson(dir, eval_extra);
 }
 
 }  // namespace

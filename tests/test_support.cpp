@@ -2,6 +2,7 @@
 
 #include <sys/wait.h>
 
+#include <catch2/catch.hpp>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -37,6 +38,16 @@ CommandResult runHost(const std::vector<std::string>& args) {
   std::string cmd = quote(PEDTRACK_BIN);
   for (const auto& a : args) cmd += " " + quote(a);
   return runShell(cmd);
+}
+
+std::string evalRunJson(const std::string& dir, const std::vector<std::string>& extra) {
+  std::vector<std::string> args{"eval",     "--truth",           dir + "/truth.csv",
+                                "--tracks", dir + "/tracks.csv", "--json"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const auto e = runHost(args);
+  INFO(e.output);
+  REQUIRE(e.exit_code == 0);
+  return e.output;
 }
 
 std::string freshDir(const std::string& tag) {

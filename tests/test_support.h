@@ -28,6 +28,9 @@ std::vector<std::string> lines(const std::string& text);
 /// The first `"key": <number>` of a JSON text, skipping keys whose value is not a number.
 double jsonValue(const std::string& json, const std::string& key);
 double jsonNumber(const std::string& json, const std::string& key);
+/// `pedtrack eval --json` of a run directory's truth.csv and tracks.csv (and `extra` options);
+/// fails the test when eval does.
+std::string evalRunJson(const std::string& dir, const std::vector<std::string>& extra = {});
 
 }  // namespace pedtrack::test
 

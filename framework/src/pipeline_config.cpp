@@ -170,7 +170,22 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
   if (!stages_text || trim(*stages_text).empty())
     throw ConfigError(
         file + ": [pipeline] stages: missing required key (the stage sections in run order)");
-  const std::vector<std::string> stage_names = splitList(*stages_text);
+  std::vector<std::string> stage_names = splitList(*stages_text);
+  if (const auto& [section, plugin] = overrides.append_stage; !plugin.empty()) {
+    const bool present = std::any_of(stage_names.begin(), stage_names.end(), [&](const auto& n) {
+      const std::string* p = model.get(n, "plugin");
+      return p && *p == plugin;
+    });
+    if (!present) {
+      std::string name = section;
+      while (model.hasSection(name)) name += "_" + plugin;
+      model.set(name, "plugin", plugin);
+      stage_names.push_back(name);
+      std::string list;
+      for (const auto& n : stage_names) list += (list.empty() ? "" : " ") + n;
+      model.set("pipeline", "stages", list);
+    }
+  }
 
   // Values typed on the command line are relative to the working directory, not to the file.
   std::set<std::pair<std::string, std::string>> from_cli;
@@ -189,6 +204,21 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
         throw ConfigError("--topic: only a .bag input has topics ('" + overrides.input + "')");
       model.set(source, "topic", overrides.topic);
     }
+  } else if (!overrides.source_plugin.empty()) {
+    const std::string source = stage_names.front();
+    if (!model.hasSection(source)) model.sections.push_back(source);
+    auto& kv = model.keys[source];
+    const std::string* current = model.get(source, "plugin");
+    if (!current || *current != overrides.source_plugin) {
+      const PluginDescriptor& d = registry.get(overrides.source_plugin);
+      std::vector<std::pair<std::string, std::string>> kept{{"plugin", overrides.source_plugin}};
+      for (const auto& [k, v] : kv)
+        if (std::any_of(d.params.begin(), d.params.end(),
+                        [&](const ParamSpec& p) { return p.name == k; }))
+          kept.emplace_back(k, v);
+      kv = kept;
+    }
+    if (!overrides.topic.empty()) model.set(source, "topic", overrides.topic);
   } else if (!overrides.topic.empty()) {
     throw ConfigError("--topic: goes with --input FILE.bag");
   }

@@ -13,17 +13,17 @@
 #include <condition_variable>
 #include <deque>
 #include <iostream>
-#include <limits>
 #include <memory>
 #include <mutex>
 
+#include "any_message.h"
 #include "bag_poses.h"
 #include "live_poses.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/pipeline.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/text.h"
-#include "ros_convert.h"
+#include "ros_frames.h"
 #include "ros_node.h"
 
 namespace pedtrack::ros_plugins {
@@ -47,13 +47,7 @@ class RosTopicSource : public Sensor {
     if (topics_.empty()) throw ConfigError("topic: no topic given");
     rosbag_source::MountTable mounts =
         rosbag_source::parseMounts(ctx.params.getString("mounts"), ctx.params.where("mounts"));
-    for (const auto& [topic, pose] : mounts) {
-      if (std::find(topics_.begin(), topics_.end(), topic) != topics_.end()) continue;
-      const std::string hint = closestMatch(topic, topics_);
-      throw ConfigError(ctx.params.where("mounts") + ": topic '" + topic +
-                        "' is not one of `topic`" +
-                        (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
-    }
+    rosbag_source::checkMountTopics(mounts, topics_, ctx.params.where("mounts"), "one of `topic`");
     ensureNode(ctx.params.getString("node"), ctx.params.getDouble("master_timeout"));
     poses_ = std::make_unique<LivePoses>(ctx.params.getString("fixed_frame"),
                                          ctx.params.getString("base_frame"), std::move(mounts),
@@ -212,57 +206,36 @@ class RosTopicSource : public Sensor {
     return group;
   }
 
-  // Converts a group into a frame, as the rosbag source does: the robot at the newest stamp,
-  // each observation mounted relative to it. False when no message of it could be converted.
+  // Converts a group into a frame, as the rosbag source does (ros_frames.h). False when no
+  // message of it could be converted.
   bool makeFrame(const std::vector<Incoming>& group, Frame& frame) {
-    struct Converted {
-      mrpt::obs::CObservation::Ptr obs;
-      const Incoming* in;
-      mrpt::poses::CPose3D robot, mount;
-      bool robot_known;
-    };
-    std::vector<Converted> done;
+    std::vector<rosbag_source::MountedObservation> done;
     for (const Incoming& in : group) {
-      Converted c{nullptr, &in, {}, {}, false};
-      c.robot_known = poses_->lookup(in.frame_id, topics_[in.topic], in.stamp, c.robot, c.mount);
-      if (in.scan)
-        c.obs = scanToObservation(*in.scan, c.mount);
-      else
-        c.obs = cloudToObservation(*in.cloud, c.mount);
+      rosbag_source::MountedObservation c;
+      c.topic = topics_[in.topic];
+      c.stamp = in.stamp.toSec();
+      c.robot_known = poses_->lookup(in.frame_id, c.topic, in.stamp, c.robot, c.mount);
+      c.obs =
+          in.scan
+              ? mrpt::obs::CObservation::Ptr(rosbag_source::scanToObservation(*in.scan, c.mount))
+              : rosbag_source::cloudToObservation(*in.cloud, c.mount);
       if (!c.obs) {
         std::lock_guard<std::mutex> lk(m_);
         ++bad_;
-        warn_(topics_[in.topic] + ": a " + (in.scan ? "LaserScan" : "PointCloud2 without x,y,z") +
+        warn_(c.topic + ": a " + (in.scan ? "LaserScan" : "PointCloud2 without x,y,z") +
               " could not be converted: skipped");
         continue;
       }
       c.obs->timestamp = mrpt::ros1bridge::fromROS(in.stamp);
-      c.obs->sensorLabel = topics_[in.topic];
+      c.obs->sensorLabel = c.topic;
       done.push_back(std::move(c));
     }
     if (done.empty()) return false;
-    const Converted& newest = *std::max_element(
-        done.begin(), done.end(),
-        [](const Converted& a, const Converted& b) { return a.in->stamp < b.in->stamp; });
-    frame.robot_pose = newest.robot;
-    frame.has_odometry = newest.robot_known;
-    for (const Converted& c : done) {
-      const mrpt::poses::CPose3D in_fixed = c.robot + c.mount;
-      c.obs->setSensorPose(&c == &newest ? c.mount : in_fixed - frame.robot_pose);
-      frame.observations.push_back(c.obs);
-      frame.sensors.push_back({topics_[c.in->topic], in_fixed});
-    }
-    frame.sensor_pose = frame.sensors.front().pose;
-    // Stages divide by the time step: frame times never go back, even where stamps do (a
-    // restarted bag, another publisher).
-    const double t = newest.in->stamp.toSec();
-    if (t < last_t_ && !warned_back_) {
-      warned_back_ = true;
+    bool went_back = false;
+    frame.t = clock_.next(rosbag_source::assembleFrame(done, frame), went_back);
+    if (went_back)
       std::cerr << "warning: ros_topic: header stamps go back; frame times are held at the "
                    "newest so far\n";
-    }
-    last_t_ = std::max(last_t_, t);
-    frame.t = last_t_;
     return true;
   }
 
@@ -279,8 +252,7 @@ class RosTopicSource : public Sensor {
   std::deque<Incoming> pending_;
   long messages_ = 0, queue_drops_ = 0, wrong_type_ = 0, bad_ = 0;
   WarnOnce warn_{"ros_topic: "};  // one line per distinct problem; counts go to run.json
-  double last_t_ = -std::numeric_limits<double>::infinity();
-  bool warned_back_ = false;
+  rosbag_source::FrameClock clock_;
 };
 
 PluginDescriptor describe() {

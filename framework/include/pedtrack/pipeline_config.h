@@ -15,6 +15,13 @@ struct PipelineOverrides {
   std::string input;              ///< --input: replaces the source with a replay of this file
   std::string topic;              ///< --topic: bag topic for --input
   std::vector<std::string> sets;  ///< --set section.key=value
+  /// Replaces the source's plugin (`pedtrack ros`: ros_topic), keeping the keys of its section
+  /// that the new plugin declares (a bag pipeline's topic and frames); `topic` then sets its
+  /// `topic`. Not with `input`.
+  std::string source_plugin;
+  /// A stage appended as {section, plugin} (`pedtrack ros`: its publisher), unless a stage
+  /// already runs that plugin; the section gets a fresh name if the file uses this one.
+  std::pair<std::string, std::string> append_stage;
 };
 
 struct StageConfig {

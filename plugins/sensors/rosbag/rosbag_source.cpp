@@ -3,11 +3,6 @@
 // robot poses from /tf and odometry. Observation time = message header stamp. Several topics
 // (scanners on one robot) are merged: consecutive messages of distinct topics within
 // `merge_window` make one frame, each observation with its own mounting pose.
-#include <mrpt/maps/CSimplePointsMap.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt/obs/CObservationPointCloud.h>
-#include <mrpt/ros1bridge/laser_scan.h>
-#include <mrpt/ros1bridge/point_cloud2.h>
 #include <mrpt/ros1bridge/time.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
@@ -15,9 +10,7 @@
 #include <sensor_msgs/PointCloud2.h>
 
 #include <algorithm>
-#include <cmath>
 #include <iostream>
-#include <limits>
 #include <memory>
 #include <optional>
 
@@ -26,6 +19,7 @@
 #include "pedtrack/plugin.h"
 #include "pedtrack/replay_pacer.h"
 #include "pedtrack/text.h"
+#include "ros_frames.h"
 
 namespace pedtrack::rosbag_source {
 namespace {
@@ -44,13 +38,8 @@ class RosbagSource : public Sensor {
     }
     const std::vector<std::string> topics = chooseTopics(ctx.params.getList("topic"));
     MountTable mounts = parseMounts(ctx.params.getString("mounts"), ctx.params.where("mounts"));
-    for (const auto& [topic, pose] : mounts) {
-      if (std::find(usable_.begin(), usable_.end(), topic) != usable_.end()) continue;
-      const std::string hint = closestMatch(topic, usable_);
-      throw ConfigError(ctx.params.where("mounts") + ": topic '" + topic +
-                        "' is not a scan topic of bag '" + file_ + "'" +
-                        (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
-    }
+    checkMountTopics(mounts, usable_, ctx.params.where("mounts"),
+                     "a scan topic of bag '" + file_ + "'");
     // One scanner's own frame is a fine robot frame; several need their mounts to line up.
     poses_ = std::make_unique<BagPoses>(
         bag_, ctx.params.getString("fixed_frame"), ctx.params.getString("base_frame"),
@@ -64,15 +53,16 @@ class RosbagSource : public Sensor {
   bool next(Frame& frame) override {
     // A group: consecutive messages (bag order) while no topic repeats and their stamps span at
     // most merge_window; the first message that does not fit waits for the next frame.
-    std::vector<Message> group;
+    std::vector<MountedObservation> group;
     double lo = 0, hi = 0;
     for (;;) {
       if (!pending_) pending_ = read();
       if (!pending_) break;
-      const Message& m = *pending_;
+      const MountedObservation& m = *pending_;
       if (!group.empty()) {
-        const bool repeats = std::any_of(group.begin(), group.end(),
-                                         [&](const Message& g) { return g.topic == m.topic; });
+        const bool repeats =
+            std::any_of(group.begin(), group.end(),
+                        [&](const MountedObservation& g) { return g.topic == m.topic; });
         if (merge_window_ <= 0 || repeats ||
             std::max(hi, m.stamp) - std::min(lo, m.stamp) > merge_window_)
           break;
@@ -83,29 +73,11 @@ class RosbagSource : public Sensor {
       pending_.reset();
     }
     if (group.empty()) return false;
-    // The frame is the robot at the newest stamp. Each observation's sensorPose places its
-    // scanner relative to that robot pose (its mount, composed with the robot's motion since its
-    // own stamp when the bag has poses), so the merged cloud is one consistent robot frame.
-    const Message& newest =
-        *std::max_element(group.begin(), group.end(),
-                          [](const Message& a, const Message& b) { return a.stamp < b.stamp; });
-    frame.robot_pose = newest.robot;
-    frame.has_odometry = newest.robot_known;
-    for (const Message& m : group) {
-      const mrpt::poses::CPose3D in_fixed = m.robot + m.mount;
-      m.obs->setSensorPose(&m == &newest ? m.mount : in_fixed - frame.robot_pose);
-      frame.observations.push_back(m.obs);
-      frame.sensors.push_back({m.topic, in_fixed});
-    }
-    frame.sensor_pose = frame.sensors.front().pose;
-    // Stages divide by the time step: frame times never go back, even where stamps do.
-    if (newest.stamp < last_t_ && !warned_back_) {
-      warned_back_ = true;
+    bool went_back = false;
+    frame.t = clock_.next(assembleFrame(group, frame), went_back);
+    if (went_back)
       std::cerr << "warning: " << file_ << ": header stamps go back in bag order (message "
                 << consumed_ << "); frame times are held at the newest so far\n";
-    }
-    last_t_ = std::max(last_t_, newest.stamp);
-    frame.t = last_t_;
     if (realtime_) pacer_.wait(frame.t);
     return true;
   }
@@ -113,21 +85,12 @@ class RosbagSource : public Sensor {
   double progress() const override { return total_ ? static_cast<double>(consumed_) / total_ : -1; }
 
  private:
-  // One scan or cloud message, converted, with the poses it was taken at.
-  struct Message {
-    mrpt::obs::CObservation::Ptr obs;
-    std::string topic;
-    double stamp = 0;
-    mrpt::poses::CPose3D robot, mount;
-    bool robot_known = false;  // robot from tf or odometry, not the identity by default
-  };
-
   // The next scan or cloud message of the view, or nothing at its end.
-  std::optional<Message> read() {
+  std::optional<MountedObservation> read() {
     for (; it_ != view_->end(); ++it_) {
       const rosbag::MessageInstance& m = *it_;
       ++consumed_;
-      Message out;
+      MountedObservation out;
       out.topic = m.getTopic();
       std::string sensor_frame;
       ros::Time stamp;
@@ -135,30 +98,18 @@ class RosbagSource : public Sensor {
         sensor_frame = scan->header.frame_id;
         stamp = scan->header.stamp;
         out.robot_known = poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
-        auto o = mrpt::obs::CObservation2DRangeScan::Create();
-        if (!mrpt::ros1bridge::fromROS(*scan, out.mount, *o))
+        out.obs = scanToObservation(*scan, out.mount);
+        if (!out.obs)
           throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " +
                           out.topic + ": LaserScan could not be converted");
-        // mrpt::ros1bridge drops returns beyond 95% of range_max; ROS defines a return as valid
-        // anywhere in [range_min, range_max], and a person at 5.4 m of a 5.6 m scanner is real.
-        for (std::size_t k = 0; k < scan->ranges.size(); ++k) {
-          const float r = scan->ranges[k];
-          o->setScanRangeValidity(k,
-                                  std::isfinite(r) && r >= scan->range_min && r <= scan->range_max);
-        }
-        out.obs = o;
       } else if (auto cloud = m.instantiate<sensor_msgs::PointCloud2>()) {
         sensor_frame = cloud->header.frame_id;
         stamp = cloud->header.stamp;
         out.robot_known = poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
-        auto o = mrpt::obs::CObservationPointCloud::Create();
-        auto pts = mrpt::maps::CSimplePointsMap::Create();
-        if (!mrpt::ros1bridge::fromROS(*cloud, *pts))
+        out.obs = cloudToObservation(*cloud, out.mount);
+        if (!out.obs)
           throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " +
                           out.topic + ": PointCloud2 has no x,y,z fields");
-        o->pointcloud = pts;
-        o->sensorPose = out.mount;
-        out.obs = o;
       } else {
         continue;
       }
@@ -214,9 +165,8 @@ class RosbagSource : public Sensor {
   std::size_t total_ = 0, consumed_ = 0;
   bool realtime_ = false;
   ReplayPacer pacer_;
-  std::optional<Message> pending_;  // read, but did not fit the last frame
-  double last_t_ = -std::numeric_limits<double>::infinity();
-  bool warned_back_ = false;
+  std::optional<MountedObservation> pending_;  // read, but did not fit the last frame
+  FrameClock clock_;
 };
 
 PluginDescriptor describe() {

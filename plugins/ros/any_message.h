@@ -1,13 +1,8 @@
 #pragma once
-// Messages off the wire whatever their type, and their conversion to MRPT observations by the
-// rosbag source's rules (plugins/sensors/rosbag/rosbag_source.cpp).
-#include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt/obs/CObservationPointCloud.h>
-#include <mrpt/poses/CPose3D.h>
+// Messages off the wire whatever their type (their conversion to MRPT observations is the
+// rosbag source's: plugins/sensors/rosbag/ros_frames.h).
 #include <ros/message_traits.h>
 #include <ros/serialization.h>
-#include <sensor_msgs/LaserScan.h>
-#include <sensor_msgs/PointCloud2.h>
 
 #include <boost/make_shared.hpp>
 #include <cstdint>
@@ -38,14 +33,6 @@ struct AnyMessage {
     return m;
   }
 };
-
-/// A LaserScan as MRPT's 2D scan mounted at `mount` on the robot; null when it cannot be
-/// converted. Valid returns are ROS's: finite and within [range_min, range_max].
-mrpt::obs::CObservation2DRangeScan::Ptr scanToObservation(const sensor_msgs::LaserScan& scan,
-                                                          const mrpt::poses::CPose3D& mount);
-/// A PointCloud2 (x, y, z fields) as MRPT's point cloud observation; null without x, y, z.
-mrpt::obs::CObservationPointCloud::Ptr cloudToObservation(const sensor_msgs::PointCloud2& cloud,
-                                                          const mrpt::poses::CPose3D& mount);
 
 }  // namespace pedtrack::ros_plugins
 
