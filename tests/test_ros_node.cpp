@@ -276,9 +276,10 @@ void checkNodeAgainstRun(const NodeCase& c) {
   ros::AsyncSpinner spinner(1);
   spinner.start();
 
-  // The node ends by itself 4 s after the last scan (end_on_idle). Its queues are deep (2000
-  // messages, 200 frames: 25 s of the sped-up bag) so that a loaded machine delays scans rather
-  // than drops them: every scan must come out.
+  // The node ends by itself 4 s after the last scan (end_on_idle). Its queues (2000 messages,
+  // 2000 frames) hold more than the whole bag, so that a loaded machine delays scans rather than
+  // drops them: every scan must come out. (With 200 frames, 2.5 s of the bag at 8x, a CI machine
+  // whose node ran slower than the bag filled the queue and dropped one.)
   std::vector<std::string> node_args{PEDTRACK_BIN,
                                      "ros",
                                      kConfigs + c.pipeline,
@@ -293,7 +294,7 @@ void checkNodeAgainstRun(const NodeCase& c) {
                                      "--set",
                                      "source.queue_size=2000",
                                      "--live-queue",
-                                     "200",
+                                     "2000",
                                      "--out",
                                      dir + "/node",
                                      "-q"};
