@@ -68,6 +68,18 @@ std::string sourceSection(int port, const std::string& extra = "end_on_idle = tr
   return s.str();
 }
 
+// configs/people_2d_legs.ini with the device on `port` in place of its simulated [source].
+void writeLegsPipeline(const std::string& path, int port) {
+  std::string ini = readFile(std::string(PEDTRACK_SOURCE_DIR) + "/configs/people_2d_legs.ini");
+  const auto src = ini.find("\n[source]") + 1;  // the section, not the comment naming it
+  REQUIRE(src != 0);
+  ini.replace(src, ini.find("\n[", src) + 1 - src, sourceSection(port));
+  const auto model = ini.find("../models/");
+  REQUIRE(model != std::string::npos);
+  ini.replace(model, 3, std::string(PEDTRACK_SOURCE_DIR) + "/");
+  writeFile(path, ini);
+}
+
 struct Run {
   std::vector<Frame> frames;
   std::map<std::string, long> counters;
@@ -278,16 +290,8 @@ TEST_CASE("hokuyo loopback: tracks come out of a live leg pipeline", "[hokuyo][l
   // In real time (10 Hz), as the device would send them.
   LoopbackHokuyo device(LoopbackHokuyo::Config(), served);
 
-  // configs/people_2d_legs.ini with the device in place of its simulated [source].
-  std::string ini = readFile(std::string(PEDTRACK_SOURCE_DIR) + "/configs/people_2d_legs.ini");
-  const auto src = ini.find("\n[source]") + 1;  // the section, not the comment naming it
-  REQUIRE(src != 0);
-  ini.replace(src, ini.find("\n[", src) + 1 - src, sourceSection(device.port()));
-  const auto model = ini.find("../models/");
-  REQUIRE(model != std::string::npos);
-  ini.replace(model, 3, std::string(PEDTRACK_SOURCE_DIR) + "/");
   const std::string dir = freshDir("hokuyo_loopback_legs");
-  writeFile(dir + "/people_2d_legs_hokuyo.ini", ini);
+  writeLegsPipeline(dir + "/people_2d_legs_hokuyo.ini", device.port());
 
   // A queue deep enough that no frame is dropped: what is tracked does not depend on the load.
   const auto r = runHost({"run", dir + "/people_2d_legs_hokuyo.ini", "--out", dir + "/out", "-q",
@@ -327,4 +331,57 @@ TEST_CASE("hokuyo loopback: tracks come out of a live leg pipeline", "[hokuyo][l
   INFO(near_stander.size() << " confirmed tracks near the standing person");
   REQUIRE(near_stander.size() == 1);
   CHECK(near_stander.begin()->second >= 7);  // in (nearly) every one of those frames
+}
+
+TEST_CASE("hokuyo loopback: SIGTERM stops a live pipeline cleanly with every output flushed",
+          "[hokuyo][legs][pipeline][signal]") {
+  // 150 scans in real time (15 s); the run is asked to stop 4 s in, as a robot's launcher would.
+  const Scans served = renderScans("legs_standing_60s.ini", 60, 150);
+  REQUIRE(served.size() == 150);
+  LoopbackHokuyo device(LoopbackHokuyo::Config(), served);
+  const std::string dir = freshDir("hokuyo_loopback_sigterm");
+  writeLegsPipeline(dir + "/people_2d_legs_hokuyo.ini", device.port());
+
+  const auto t0 = std::chrono::steady_clock::now();
+  // --preserve-status: timeout exits with pedtrack's own status after sending SIGTERM.
+  const auto r = runShell("timeout --preserve-status -s TERM 4 " + std::string(PEDTRACK_BIN) +
+                          " run " + dir + "/people_2d_legs_hokuyo.ini --out " + dir +
+                          "/out --record " + dir + "/live.rawlog -q");
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  INFO(r.output);
+  CHECK(r.exit_code == 0);
+  CHECK(secs < 9);  // it stopped when asked, not when the device ran out of scans (15 s)
+
+  const std::string json = readFile(dir + "/out/run.json");
+  INFO(json);
+  CHECK(json.find("\"status\": \"interrupted\"") != std::string::npos);
+  CHECK(json.find("\"live\": true") != std::string::npos);
+  const double processed = jsonValue(json, "frames_processed");
+  CHECK(processed >= 10);
+  CHECK(processed < served.size());
+  CHECK(jsonValue(json, "frames_recorded") >= processed);
+
+  // tracks.csv is whole: a header, complete rows, none from a frame after the last processed.
+  const std::string csv = readFile(dir + "/out/tracks.csv");
+  REQUIRE(!csv.empty());
+  CHECK(csv.back() == '\n');
+  const auto rows = lines(csv);
+  REQUIRE(rows.size() > 1);
+  const auto fields = [](const std::string& row) {
+    return static_cast<std::size_t>(std::count(row.begin(), row.end(), ',')) + 1;
+  };
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    INFO(rows[i]);
+    REQUIRE(fields(rows[i]) == fields(rows[0]));
+    CHECK(std::stol(rows[i].substr(rows[i].find(',') + 1)) < processed);
+  }
+
+  // The recording is closed properly: it replays, frame for frame.
+  const auto replay =
+      runHost({"run", std::string(PEDTRACK_SOURCE_DIR) + "/configs/people_2d_legs.ini", "--input",
+               dir + "/live.rawlog", "--out", dir + "/replay", "-q"});
+  INFO(replay.output);
+  REQUIRE(replay.exit_code == 0);
+  CHECK(jsonValue(readFile(dir + "/replay/run.json"), "frames_read") ==
+        jsonValue(json, "frames_recorded"));
 }
