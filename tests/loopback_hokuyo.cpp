@@ -1,10 +1,12 @@
 #include "loopback_hokuyo.h"
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -63,7 +65,9 @@ LoopbackHokuyo::LoopbackHokuyo(Config config, std::vector<std::vector<float>> sc
     if (s.size() != steps)
       throw std::invalid_argument("LoopbackHokuyo: a scan has " + std::to_string(s.size()) +
                                   " ranges, PP reports " + std::to_string(steps) + " steps");
-  if (!openListener()) {
+  if (cfg_.serial) {
+    openPty();
+  } else if (!openListener()) {
     const std::string why = std::strerror(errno);
     throw std::runtime_error("LoopbackHokuyo: cannot listen on 127.0.0.1: " + why);
   }
@@ -74,6 +78,33 @@ LoopbackHokuyo::~LoopbackHokuyo() {
   stop_ = true;
   thread_.join();
   if (listen_fd_ >= 0) ::close(listen_fd_);
+  if (cfg_.serial && client_fd_ >= 0) ::close(client_fd_);
+  if (pty_slave_fd_ >= 0) ::close(pty_slave_fd_);
+}
+
+// The device's end of a pseudo-terminal; the driver opens the other end by name. The line is
+// put in raw mode here (the driver's own setup does the same), so nothing is echoed or edited
+// before the driver has configured it.
+void LoopbackHokuyo::openPty() {
+  const auto fail = [](const std::string& what) {
+    throw std::runtime_error("LoopbackHokuyo: " + what + ": " + std::strerror(errno));
+  };
+  const int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (master < 0) fail("posix_openpt");
+  char name[128];
+  if (::grantpt(master) != 0 || ::unlockpt(master) != 0 || ::ptsname_r(master, name, sizeof name))
+    fail("pseudo-terminal setup");
+  device_path_ = name;
+  pty_slave_fd_ = ::open(name, O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (pty_slave_fd_ < 0) fail("open " + device_path_);
+  termios t{};
+  ::tcgetattr(pty_slave_fd_, &t);
+  ::cfmakeraw(&t);
+  ::tcsetattr(pty_slave_fd_, TCSANOW, &t);
+  client_fd_ = master;
+  accepted_ = 1;  // the line is connected from the start
+  mute_until_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                   std::chrono::duration<double>(cfg_.mute_first));
 }
 
 // Port 0 the first time: the system picks a free one (tests run in parallel); the same port when
@@ -102,6 +133,8 @@ bool LoopbackHokuyo::openListener() {
 }
 
 void LoopbackHokuyo::addFault(Fault kind, std::size_t at_scan, double seconds) {
+  if (cfg_.serial && kind == Fault::Drop)
+    throw std::invalid_argument("LoopbackHokuyo: a serial device has no connection to drop");
   std::lock_guard<std::mutex> lock(faults_m_);
   faults_.push_back({kind, at_scan, seconds});
 }
@@ -134,7 +167,8 @@ bool LoopbackHokuyo::silent() const {
 // a send to a client that stopped reading, which gives up after 0.5 s.
 void LoopbackHokuyo::serve() {
   while (!stop_) {
-    if (listen_fd_ < 0 && Clock::now() >= drop_until_) openListener();  // back up after a Drop
+    if (!cfg_.serial && listen_fd_ < 0 && Clock::now() >= drop_until_)
+      openListener();  // back up after a Drop
     pollfd fds[2] = {{listen_fd_, POLLIN, 0}, {client_fd_, POLLIN, 0}};
     const nfds_t n = client_fd_ >= 0 ? 2 : 1;
     if (::poll(fds, n, 2) < 0 && errno != EINTR) break;
@@ -159,8 +193,11 @@ void LoopbackHokuyo::acceptClient() {
 }
 
 void LoopbackHokuyo::closeClient() {
-  if (client_fd_ >= 0) ::close(client_fd_);
-  client_fd_ = -1;
+  // A serial line stays: only the session's state is forgotten.
+  if (!cfg_.serial) {
+    if (client_fd_ >= 0) ::close(client_fd_);
+    client_fd_ = -1;
+  }
   rx_.clear();
   hung_ = false;
   md_ = Stream{};
@@ -169,11 +206,13 @@ void LoopbackHokuyo::closeClient() {
 void LoopbackHokuyo::readClient() {
   char buf[4096];
   for (int i = 0; i < 64; ++i) {  // bounded: the rest is read on the next poll
-    const ssize_t n = ::recv(client_fd_, buf, sizeof buf, 0);
+    const ssize_t n = ::read(client_fd_, buf, sizeof buf);
     if (n > 0) {
       rx_.append(buf, static_cast<std::size_t>(n));
       continue;
     }
+    // A pty's master reads EIO while no one has the line open: nothing to read, not a hang-up.
+    if (cfg_.serial) break;
     if (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) {
       closeClient();  // the driver hung up
       return;
@@ -185,6 +224,12 @@ void LoopbackHokuyo::readClient() {
   for (std::size_t p; client_fd_ >= 0 && (p = rx_.find_first_of("\n\r")) != std::string::npos;) {
     const std::string cmd = rx_.substr(0, p);
     rx_.erase(0, p + 1);
+    // A serial line is not reconnected: a hung device is woken by the QT with which a driver
+    // that opened the line anew starts, once its silence is over.
+    if (cfg_.serial && hung_ && Clock::now() >= silent_until_ && cmd.rfind("QT", 0) == 0) {
+      hung_ = false;
+      md_ = Stream{};
+    }
     if (!cmd.empty() && !silent()) answer(cmd);
   }
 }
@@ -331,7 +376,9 @@ std::string LoopbackHokuyo::scanBody(std::size_t k, int start, int end, int clus
 bool LoopbackHokuyo::sendAll(const std::string& bytes) {
   const auto give_up = Clock::now() + std::chrono::milliseconds(500);
   for (std::size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::send(client_fd_, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL);
+    const ssize_t n =
+        cfg_.serial ? ::write(client_fd_, bytes.data() + done, bytes.size() - done)
+                    : ::send(client_fd_, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL);
     if (n > 0) {
       done += static_cast<std::size_t>(n);
       continue;

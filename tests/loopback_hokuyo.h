@@ -1,8 +1,10 @@
 #pragma once
-// A fake Ethernet Hokuyo (URG/UTM) for tests: it listens on 127.0.0.1 on a port the system
-// chooses and speaks enough SCIP 2.0 over TCP for MRPT's CHokuyoURG (SCIP2.0, QT, BM, RS, HS, CR,
-// VV, PP, II, MD/ME streams and GD/GE single scans), serving given scans in order. It can fail
-// the way a real device does: go silent, drop the connection, send a malformed scan.
+// A fake Hokuyo (URG/UTM) for tests: it listens on 127.0.0.1 on a port the system chooses (an
+// Ethernet model), or sits on the master side of a pseudo-terminal (a USB/RS-232 model, which
+// the driver opens as a serial port), and speaks enough SCIP 2.0 for MRPT's CHokuyoURG (SCIP2.0,
+// QT, BM, RS, HS, CR, VV, PP, II, MD/ME streams and GD/GE single scans), serving given scans in
+// order. It can fail the way a real device does: go silent, drop the connection, send a malformed
+// scan.
 #include <atomic>
 #include <chrono>
 #include <cstddef>
@@ -33,6 +35,9 @@ class LoopbackHokuyo {
     /// Seconds from the first connection during which nothing is answered (a device still
     /// booting when the driver comes).
     double mute_first = 0;
+    /// A serial device: a pseudo-terminal (devicePath()) instead of a TCP port. Drop does not
+    /// apply (there is no connection to refuse).
+    bool serial = false;
   };
 
   enum class Fault {
@@ -52,6 +57,8 @@ class LoopbackHokuyo {
   LoopbackHokuyo& operator=(const LoopbackHokuyo&) = delete;
 
   int port() const { return port_; }
+  /// The serial device to open (COM_port_LIN), for a `serial` device; empty otherwise.
+  const std::string& devicePath() const { return device_path_; }
   /// Fires once, when scan `at_scan` (index into the served scans) is next due. Silence and
   /// Drop keep that scan for later; the malformed ones use it up.
   void addFault(Fault kind, std::size_t at_scan, double seconds = 0);
@@ -77,6 +84,7 @@ class LoopbackHokuyo {
   };
 
   bool openListener();
+  void openPty();
   void serve();
   void acceptClient();
   void readClient();
@@ -93,6 +101,8 @@ class LoopbackHokuyo {
   const std::vector<std::vector<float>> scans_;
   const Clock::duration period_;  // between streamed scans
   int listen_fd_ = -1, client_fd_ = -1, port_ = 0;
+  int pty_slave_fd_ = -1;  // held open so the line stays up while the driver reconnects
+  std::string device_path_;
   std::string rx_;
   bool hung_ = false;  // the current connection was silenced: it never streams again
   Stream md_;

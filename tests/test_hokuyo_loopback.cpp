@@ -80,6 +80,14 @@ void writeLegsPipeline(const std::string& path, int port) {
   writeFile(path, ini);
 }
 
+// The same for a serial (USB) Hokuyo: MRPT's COM_port_LIN instead of IP_DIR / PORT_DIR.
+std::string serialSourceSection(const std::string& device_path,
+                                const std::string& extra = "end_on_idle = true\n") {
+  std::string s = sourceSection(0, extra);
+  const auto from = s.find("IP_DIR"), to = s.find('\n', s.find("PORT_DIR"));
+  return s.replace(from, to - from, "COM_port_LIN = " + device_path);
+}
+
 struct Run {
   std::vector<Frame> frames;
   std::map<std::string, long> counters;
@@ -180,6 +188,42 @@ TEST_CASE("hokuyo loopback: CHokuyoURG reads the served scans intact", "[hokuyo]
   CHECK(device.connections() == 1);
   CHECK(run.counters.at("driver_errors") == 0);
   CHECK(run.counters.at("reconnects") == 0);
+}
+
+TEST_CASE("hokuyo loopback: a serial (USB) Hokuyo is read intact and woken after a hang",
+          "[hokuyo][mrpt_sensor][serial]") {
+  // The device sits on a pseudo-terminal, which CHokuyoURG opens as its COM port: CSerialPort's
+  // line setup, SS (baud rate) and timed reads are exercised, not the TCP path.
+  const Scans served = renderScans("legs_crowd_10.ini", 40, 30);
+  REQUIRE(served.size() == 30);
+  LoopbackHokuyo::Config cfg = fastDevice();
+  cfg.serial = true;
+  LoopbackHokuyo device(cfg, served);
+  REQUIRE(!device.devicePath().empty());
+  INFO("device " << device.devicePath());
+
+  SECTION("every scan arrives intact and in order") {
+    const Run run =
+        readFrames("[pipeline]\nstages = source\n" + serialSourceSection(device.devicePath()),
+                   served.size(), 20);
+    INFO("read " << run.frames.size() << " frames in " << run.seconds << " s");
+    CHECK(servedIndices(run.frames, served) == allBut(served.size(), {}));
+    CHECK(run.counters.at("driver_errors") == 0);
+    CHECK(run.counters.at("reconnects") == 0);
+  }
+
+  SECTION("a device that goes silent is re-opened until it answers again") {
+    device.addFault(Fault::Silence, 10, 1.2);
+    const Run run = readFrames("[pipeline]\nstages = source\n" +
+                                   serialSourceSection(device.devicePath(),
+                                                       "end_on_idle = true\nreconnect_after = "
+                                                       "0.5\nreconnect_delay = 0.2\n"),
+                               served.size(), 25);
+    INFO("read " << run.frames.size() << " frames in " << run.seconds << " s");
+    CHECK(servedIndices(run.frames, served) == allBut(served.size(), {}));
+    CHECK(run.counters.at("stalls") >= 1);
+    CHECK(run.counters.at("reconnects") >= 1);  // scans 10.. came from a re-opened line
+  }
 }
 
 TEST_CASE(
