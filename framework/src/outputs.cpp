@@ -62,6 +62,15 @@ const char* TracksCsvWriter::header() {
 void TracksCsvWriter::write(const Frame& f) {
   char buf[512];
   for (const Track& tr : f.tracks) {
+    const bool finite = std::isfinite(tr.x) && std::isfinite(tr.y) && std::isfinite(tr.vx) &&
+                        std::isfinite(tr.vy) && std::isfinite(tr.yaw) && std::isfinite(tr.score) &&
+                        (!tr.has_shape || (std::isfinite(tr.alpha) && std::isfinite(tr.beta))) &&
+                        (!tr.has_cov || (std::isfinite(tr.cov_xx) && std::isfinite(tr.cov_xy) &&
+                                         std::isfinite(tr.cov_yy)));
+    if (!finite) {
+      ++nonfinite_;
+      continue;
+    }
     double sx = 0, sy = 0;
     toSensorFrame(f, tr.x, tr.y, sx, sy);
     int n = std::snprintf(buf, sizeof buf, "%.6f,%zu,%ld,%.4f,%.4f,%.4f,%.4f,%.5f,%.4f,%.4f,", f.t,
@@ -216,11 +225,17 @@ void writeRunJson(const std::string& path, const RunSummary& s) {
                jsonEscape(s.input).c_str());
   std::fprintf(f, "  \"status\": \"%s\",\n  \"error\": \"%s\",\n", s.status.c_str(),
                jsonEscape(s.error).c_str());
-  std::fprintf(
-      f,
-      "  \"frames_read\": %zu,\n  \"frames_processed\": %zu,\n  \"frames_failed\": %zu,\n"
-      "  \"entries_skipped\": %zu,\n  \"wall_time_s\": %.6f,\n  \"frames_per_second\": %.1f,\n",
-      s.frames_read, s.frames_processed, s.frames_failed, s.entries_skipped, s.wall_time_s, fps);
+  std::fprintf(f,
+               "  \"frames_read\": %zu,\n  \"frames_processed\": %zu,\n  \"frames_failed\": %zu,\n"
+               "  \"frames_skipped\": %zu,\n  \"entries_skipped\": %zu,\n  \"wall_time_s\": %.6f,\n"
+               "  \"frames_per_second\": %.1f,\n",
+               s.frames_read, s.frames_processed, s.frames_failed, s.frames_skipped,
+               s.entries_skipped, s.wall_time_s, fps);
+  std::fprintf(f, "  \"input_warnings\": {");
+  for (std::size_t c = 0; c < s.input_warnings.size(); ++c)
+    std::fprintf(f, "%s\"%s\": %ld", c ? ", " : "", jsonEscape(s.input_warnings[c].first).c_str(),
+                 s.input_warnings[c].second);
+  std::fprintf(f, "},\n  \"nonfinite_track_rows\": %zu,\n", s.nonfinite_track_rows);
   std::fprintf(f,
                "  \"live\": %s,\n  \"frames_dropped\": %zu,\n  \"frames_recorded\": %zu,\n"
                "  \"latency_ms\": {\"frames\": %zu, \"mean\": %.6f, \"p50\": %.6f, \"p99\": %.6f, "

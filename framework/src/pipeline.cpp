@@ -6,6 +6,8 @@
 #include <iostream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/fault_injection.h"
+#include "pedtrack/frame_guard.h"
 #include "pedtrack/frame_supply.h"
 #include "pedtrack/point_labels.h"
 #include "pedtrack/progress.h"
@@ -53,6 +55,13 @@ Pipeline::Pipeline(const PipelineConfig& config) : config_(config) {
                           "] plugin: not a sensor");
       p.release();
       source_.reset(s);
+      if (config.faults) {
+        try {
+          source_ = wrapWithFaults(std::move(source_), *config.faults);
+        } catch (const ConfigError& e) {
+          throw ConfigError(config.file + ": " + e.what());
+        }
+      }
     } else {
       auto* s = dynamic_cast<Stage*>(p.get());
       if (!s)
@@ -112,11 +121,16 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   sum.live = supply.live();
   Frame frame;
   Clock::time_point arrival;
+  FrameGuard guard;
   while (!stopRequested()) {
     const auto t0 = Clock::now();
     if (!supply.next(frame, arrival)) break;
     // The source's time per frame; for a live source, how long the stages waited for data.
     sum.stages[0].add(msSince(t0));
+    if (!guard.admit(frame)) {  // counted; the stages never see it
+      ++sum.frames_skipped;
+      continue;
+    }
     bool ok = true;
     for (std::size_t i = 0; i < stages_.size() && ok; ++i) {
       const auto ts = Clock::now();
@@ -151,6 +165,8 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   }
   supply.stop();  // joins a live source's thread: it checks stopRequested() between reads
   sum.frames_read = supply.framesRead();
+  sum.input_warnings = guard.counts();
+  if (csv) sum.nonfinite_track_rows = csv->nonfiniteRows();
   sum.frames_dropped = supply.dropped();
   if (!supply.error().empty()) {
     sum.status = "error";

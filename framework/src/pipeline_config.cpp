@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/fault_injection.h"
 #include "pedtrack/text.h"
 
 namespace fs = std::filesystem;
@@ -65,6 +66,44 @@ IniModel readModel(const mrpt::config::CConfigFileBase& ini) {
 
 std::string absoluteFromCwd(const std::string& p) {
   return p.empty() ? p : fs::absolute(p).lexically_normal().string();
+}
+
+using CliKeys = std::set<std::pair<std::string, std::string>>;
+
+// The validated values of section `name` against `specs`: unknown keys (unless
+// `accepts_other_keys`), missing required keys and bad values are ConfigErrors naming file,
+// section and key; relative input files are made absolute from the file's directory unless they
+// were typed on the command line.
+ParamSet sectionParams(const IniModel& model, const std::string& file, const std::string& name,
+                       const std::vector<ParamSpec>& specs, bool accepts_other_keys,
+                       const std::string& owner, const std::string& otherwise,
+                       const fs::path& base_dir, const CliKeys& from_cli) {
+  ParamSet params(file, name);
+  std::vector<std::string> declared;
+  for (const auto& p : specs) declared.push_back(p.name);
+  for (const auto& [key, value] : model.keys.at(name)) {
+    if (key == "plugin") continue;
+    if (std::find(declared.begin(), declared.end(), key) != declared.end()) continue;
+    if (accepts_other_keys) continue;
+    const std::string hint = closestMatch(key, declared);
+    throw ConfigError(file + ": [" + name + "] " + key + ": unknown key for " + owner +
+                      (hint.empty() ? otherwise : " (did you mean '" + hint + "'?)"));
+  }
+  for (const auto& spec : specs) {
+    const std::string* given = model.get(name, spec.name);
+    const std::string where = params.where(spec.name);
+    if (!given) {
+      if (spec.required()) throw ConfigError(where + ": missing required key (" + spec.doc + ")");
+      params.set(spec.name, *spec.default_value);
+      continue;
+    }
+    std::string value = *given;
+    if (spec.type == ParamType::InputFile && !value.empty() && fs::path(value).is_relative() &&
+        !from_cli.count({name, spec.name}))
+      value = (base_dir / value).lexically_normal().string();
+    params.set(spec.name, validateValue(spec, value, where));
+  }
+  return params;
 }
 
 }  // namespace
@@ -188,7 +227,7 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
   }
 
   // Values typed on the command line are relative to the working directory, not to the file.
-  std::set<std::pair<std::string, std::string>> from_cli;
+  CliKeys from_cli;
   if (!overrides.input.empty()) {
     const std::string source = stage_names.front();
     const std::string ext = fs::path(overrides.input).extension().string();
@@ -238,6 +277,10 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
     const std::string& name = stage_names[i];
     if (!seen.insert(name).second)
       throw ConfigError(file + ": [pipeline] stages: stage '" + name + "' is listed twice");
+    if (name == "faults")
+      throw ConfigError(file +
+                        ": [pipeline] stages: [faults] is not a stage (it configures fault "
+                        "injection into the source)");
     if (!model.hasSection(name) || name == "pipeline") {
       std::vector<std::string> candidates;
       for (const auto& s : model.sections)
@@ -265,35 +308,14 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
       throw ConfigError(file + ": [" + name + "] plugin: '" + d.name +
                         "' is a sensor; only the first stage may be one");
 
-    sc.params = ParamSet(file, name);
-    std::vector<std::string> declared;
-    for (const auto& p : d.params) declared.push_back(p.name);
-    for (const auto& [key, value] : model.keys.at(name)) {
-      if (key == "plugin") continue;
-      if (std::find(declared.begin(), declared.end(), key) != declared.end()) continue;
-      if (d.accepts_other_keys) continue;
-      const std::string hint = closestMatch(key, declared);
-      throw ConfigError(file + ": [" + name + "] " + key + ": unknown key for plugin '" + d.name +
-                        "'" +
-                        (hint.empty() ? " (`pedtrack plugins " + d.name + "` lists its keys)"
-                                      : " (did you mean '" + hint + "'?)"));
-    }
-    for (const auto& spec : d.params) {
-      const std::string* given = model.get(name, spec.name);
-      const std::string where = sc.params.where(spec.name);
-      if (!given) {
-        if (spec.required()) throw ConfigError(where + ": missing required key (" + spec.doc + ")");
-        sc.params.set(spec.name, *spec.default_value);
-        continue;
-      }
-      std::string value = *given;
-      if (spec.type == ParamType::InputFile && !value.empty() && fs::path(value).is_relative() &&
-          !from_cli.count({name, spec.name}))
-        value = (base_dir / value).lexically_normal().string();
-      sc.params.set(spec.name, validateValue(spec, value, where));
-    }
+    sc.params =
+        sectionParams(model, file, name, d.params, d.accepts_other_keys, "plugin '" + d.name + "'",
+                      " (`pedtrack plugins " + d.name + "` lists its keys)", base_dir, from_cli);
     cfg.stages.push_back(std::move(sc));
   }
+  if (model.hasSection("faults"))
+    cfg.faults = sectionParams(model, file, "faults", faultParams(), false, "fault injection",
+                               " (README \"Reliability\" lists them)", base_dir, from_cli);
   cfg.ini = std::make_shared<mrpt::config::CConfigFileMemory>(model.text());
   return cfg;
 }

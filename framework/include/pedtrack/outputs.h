@@ -33,8 +33,14 @@ class CsvStream {
 class TracksCsvWriter : public CsvStream {
  public:
   explicit TracksCsvWriter(const std::string& path) : CsvStream(path, header()) {}
+  /// One row per track; a track whose position, velocity or covariance is not finite (a
+  /// tracker that diverged) is left out and counted: no row ever holds a NaN or an infinity.
   void write(const Frame& frame);
+  std::size_t nonfiniteRows() const { return nonfinite_; }
   static const char* header();
+
+ private:
+  std::size_t nonfinite_ = 0;
 };
 
 /// Streams detections.csv: one row per detection per frame (`header()`). The pipeline creates it
@@ -67,11 +73,15 @@ struct RunSummary {
   std::string input;
   std::size_t frames_read = 0;
   std::size_t frames_processed = 0;
-  std::size_t frames_failed = 0;    ///< frames where a stage threw
-  std::size_t entries_skipped = 0;  ///< bad input entries skipped by the source
-  bool live = false;                ///< the source was a live device, read on its own thread
-  std::size_t frames_dropped = 0;   ///< live: frames dropped because the stages fell behind
-  std::size_t frames_recorded = 0;  ///< frames written by --record
+  std::size_t frames_failed = 0;   ///< frames where a stage threw
+  std::size_t frames_skipped = 0;  ///< frames the FrameGuard refused (time or pose unusable)
+  /// What the FrameGuard found wrong in the input, every kind with its count.
+  std::vector<std::pair<std::string, long>> input_warnings;
+  std::size_t nonfinite_track_rows = 0;  ///< track rows left out of tracks.csv: not finite
+  std::size_t entries_skipped = 0;       ///< bad input entries skipped by the source
+  bool live = false;                     ///< the source was a live device, read on its own thread
+  std::size_t frames_dropped = 0;        ///< live: frames dropped because the stages fell behind
+  std::size_t frames_recorded = 0;       ///< frames written by --record
   /// Per processed frame: from the source handing it over to its outputs written (ms).
   StageStats latency{"latency", ""};
   double wall_time_s = 0;

@@ -4,6 +4,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ class PipelineConfig {
 
   std::string file;
   std::vector<StageConfig> stages;  ///< stages[0] is the source
+  /// The `[faults]` section, when the pipeline has one: its source is wrapped by the fault
+  /// injector (fault_injection.h).
+  std::optional<ParamSet> faults;
   std::shared_ptr<mrpt::config::CConfigFileMemory> ini;
 };
 
