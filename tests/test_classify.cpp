@@ -272,3 +272,12 @@ TEST_CASE("the RBF decision function agrees with OpenCV's predict on the shipped
   CHECK(both_signs[0] > 0);  // the inputs reach both sides of the boundary
   CHECK(both_signs[1] > 0);
 }
+
+TEST_CASE("a model file found by fuzzing (support vector indices past the vectors) is refused",
+          "[classify][fuzz]") {
+  // fuzz/regressions/fuzz_model: once a heap overflow in SvmClassifier's constructor.
+  const std::string path =
+      std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/svm_index_past_vectors.yml";
+  CHECK_THROWS_WITH(pedtrack::classify::loadScorer(path),
+                    Catch::Contains("svm_index_past_vectors.yml: SVM model: support vector index"));
+}

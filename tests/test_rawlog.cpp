@@ -150,3 +150,18 @@ TEST_CASE("plain and gz-compressed logs give the same frames", "[rawlog]") {
   CHECK(a.back().t == b.back().t);
   CHECK(a.back().cloud().size() == b.back().cloud().size());
 }
+
+TEST_CASE("a rawlog found by fuzzing (corrupt gzip data) ends in one clear error",
+          "[rawlog][fuzz]") {
+  // fuzz/regressions/fuzz_rawlog: MRPT handed gzread's -1 on as a huge byte count, read as
+  // data (undefined behaviour, caught by UBSan).
+  const std::string path =
+      std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_rawlog/corrupt_gzip.rawlog";
+  const std::string dir = freshDir("rawlog_fuzz_regression");
+  writeFile(dir + "/p.ini",
+            "[pipeline]\nstages = source\n[source]\nplugin = rawlog\nfile = " + path + "\n");
+  const auto r = runHost({"run", dir + "/p.ini", "-q"});
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output, Catch::Contains("error: " + path + ": entry"));
+}

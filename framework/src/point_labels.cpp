@@ -96,10 +96,14 @@ LabelFileReader::LabelFileReader(const std::string& path) : path_(path) {
   std::uint32_t kind = 0;
   const bool whole = gzread(f, header, sizeof header) == int(sizeof header);
   std::memcpy(&kind, header + 8, sizeof kind);
-  if (!whole || std::memcmp(header, kMagic, sizeof kMagic) != 0 || (kind != 1 && kind != 2))
+  if (!whole || std::memcmp(header, kMagic, sizeof kMagic) != 0 || (kind != 1 && kind != 2)) {
+    // The destructor does not run for a constructor that throws (LeakSanitizer found it).
+    gzclose(f);
+    gz_ = nullptr;
     throw ConfigError(path +
                       ": not a pedtrack point label file (truth_points.bin or "
                       "point_labels.bin)");
+  }
   kind_ = static_cast<LabelKind>(kind);
 }
 

@@ -202,7 +202,11 @@ LoadedSvm loadSvmModel(const std::string& path) {
   }
   if (!svm->isTrained() || svm->getVarCount() != d)
     r.fail("'svm' is missing or does not match the features");
-  m.svm = std::make_unique<SvmClassifier>(svm, z, platt, m.info.features);
+  try {
+    m.svm = std::make_unique<SvmClassifier>(svm, z, platt, m.info.features);
+  } catch (const DataError& e) {
+    r.fail(e.what());
+  }
   return m;
 }
 

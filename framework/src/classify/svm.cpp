@@ -163,6 +163,12 @@ SvmClassifier SvmClassifier::train(const SampleSet& s, const SvmTraining& o) {
 SvmClassifier::SvmClassifier(cv::Ptr<cv::ml::SVM> svm, Standardizer z, PlattSigmoid platt,
                              std::vector<std::string> features)
     : svm_(std::move(svm)), z_(std::move(z)), platt_(platt), features_(std::move(features)) {
+  // A model file is input: its parts must agree before anything indexes one by another
+  // (fuzz_model found a file whose support-vector indices ran past the vectors).
+  if (z_.mean.size() != dims() || z_.scale.size() != dims())
+    throw DataError("SVM model: the standardisation has " + std::to_string(z_.mean.size()) +
+                    " means and " + std::to_string(z_.scale.size()) + " scales for " +
+                    std::to_string(dims()) + " features");
   if (svm_.empty() || !svm_->isTrained() || svm_->getKernelType() != cv::ml::SVM::RBF ||
       svm_->getType() != cv::ml::SVM::C_SVC)
     return;
@@ -170,6 +176,11 @@ SvmClassifier::SvmClassifier(cv::Ptr<cv::ml::SVM> svm, Standardizer z, PlattSigm
   cv::Mat alpha, index;
   const double rho = svm_->getDecisionFunction(0, alpha, index);
   if (sv.type() != CV_32F || sv.cols != int(dims()) || alpha.total() != index.total()) return;
+  if (index.type() != CV_32S) throw DataError("SVM model: support vector indices are not integers");
+  for (int k = 0; k < int(index.total()); ++k)
+    if (index.at<int>(k) < 0 || index.at<int>(k) >= sv.rows)
+      throw DataError("SVM model: support vector index " + std::to_string(index.at<int>(k)) +
+                      " of " + std::to_string(sv.rows) + " vectors");
   RbfDecision r;
   const int m = int(alpha.total());
   r.sv.resize(m, sv.cols);

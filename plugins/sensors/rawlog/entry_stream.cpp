@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace pedtrack::rawlog {
 
@@ -23,7 +24,14 @@ size_t EntryStream::Read(void* buffer, size_t count) {
     out[n++] = pending_.front();
     pending_.pop_front();
   }
-  if (n < count) n += in_.Read(out + n, count - n);
+  if (n < count) {
+    // MRPT passes gzread's -1 (corrupt compressed data) on as a huge size_t (fuzz_rawlog found
+    // it): that is a read error, never bytes.
+    const size_t got = in_.Read(out + n, count - n);
+    if (got > count - n)
+      throw std::runtime_error("corrupt compressed data at byte " + std::to_string(position_ + n));
+    n += got;
+  }
   entry_.insert(entry_.end(), out, out + n);
   position_ += n;
   return n;
