@@ -4,6 +4,7 @@
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -41,9 +42,12 @@ int simCommand(const std::vector<std::string>& args) {
   po::options_description opts("options");
   std::string scenario, out;
   long seed = -1;
+  double duration = -1;
   opts.add_options()("scenario", po::value(&scenario), "scenario file (configs/scenarios/*.ini)")(
       "out,o", po::value(&out), "directory for sim.rawlog and truth.csv")(
       "seed", po::value(&seed)->default_value(-1), "random seed (-1: the scenario's own)")(
+      "duration", po::value(&duration),
+      "simulate only the first S seconds (a quick look at a long scenario)")(
       "keys", "list every scenario section and key (markdown tables)")(
       "no-point-truth", "do not write truth_points.bin (what each return hit)")(
       "quiet,q", "no progress output");
@@ -62,7 +66,11 @@ int simCommand(const std::vector<std::string>& args) {
                       "scenario's own)");
   if (out.empty()) throw ConfigError("pedtrack sim: missing --out DIR");
 
-  sim::Simulator simulator(sim::loadScenario(scenario, seed));
+  if (vm.count("duration") && !(duration > 0))
+    throw ConfigError("--duration " + std::to_string(duration) + ": expected seconds > 0");
+  sim::Scenario loaded = sim::loadScenario(scenario, seed);
+  if (duration > 0) loaded.duration = std::min(loaded.duration, duration);
+  sim::Simulator simulator(std::move(loaded));
   simulator.setPointTruth(!vm.count("no-point-truth"));
   std::filesystem::create_directories(out);
   const std::string rawlog = out + "/sim.rawlog", truth = out + "/truth.csv",

@@ -211,10 +211,11 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
         file + ": [pipeline] stages: missing required key (the stage sections in run order)");
   std::vector<std::string> stage_names = splitList(*stages_text);
   if (const auto& [section, plugin] = overrides.append_stage; !plugin.empty()) {
-    const bool present = std::any_of(stage_names.begin(), stage_names.end(), [&](const auto& n) {
-      const std::string* p = model.get(n, "plugin");
-      return p && *p == plugin;
-    });
+    const bool present =
+        std::any_of(stage_names.begin(), stage_names.end(), [&, &wanted = plugin](const auto& n) {
+          const std::string* p = model.get(n, "plugin");
+          return p && *p == wanted;
+        });
     if (!present) {
       std::string name = section;
       while (model.hasSection(name)) name += "_" + plugin;
@@ -253,7 +254,7 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
       std::vector<std::pair<std::string, std::string>> kept{{"plugin", overrides.source_plugin}};
       for (const auto& [k, v] : kv)
         if (std::any_of(d.params.begin(), d.params.end(),
-                        [&](const ParamSpec& p) { return p.name == k; }))
+                        [&key = k](const ParamSpec& p) { return p.name == key; }))
           kept.emplace_back(k, v);
       kv = kept;
     }

@@ -87,7 +87,7 @@ void scoreSegmentationFrame(const LabelFrame& truth, const LabelFrame& run,
     rep.all += c;
     addTo(rep.per_person, id, c);
     const auto it = std::find_if(truth.people.begin(), truth.people.end(),
-                                 [&](const PersonClearance& p) { return p.id == id; });
+                                 [&, pid = id](const PersonClearance& p) { return p.id == pid; });
     if (it != truth.people.end() && it->clearance >= opt.isolation) {
       rep.isolated += c;
       addTo(rep.per_person_isolated, id, c);

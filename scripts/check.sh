@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The project's test command (README "Quick start"; .ci/run runs exactly this):
+#   1. builds everything with clang under AddressSanitizer + UndefinedBehaviorSanitizer (and
+#      libFuzzer's coverage) in build-check/, and runs the whole test suite there;
+#   2. runs every libFuzzer target for a bounded time (scripts/fuzz.sh);
+# and prints how long each step took. Any sanitizer report, failed test or fuzzer crash fails it.
+# A quicker check of a Release build: `ctest --test-dir build -j2`.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+build=${PEDTRACK_CHECK_BUILD:-build-check}
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:detect_odr_violation=0}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/scripts/lsan.supp:print_suppressions=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+times=()
+step() {  # step NAME COMMAND...
+  local name=$1 start
+  shift
+  start=$(date +%s)
+  echo "== $name"
+  "$@"
+  times+=("$name: $(( $(date +%s) - start )) s")
+}
+step "build (clang, ASan + UBSan + fuzzer coverage)" bash -c \
+  "CC=clang CXX=clang++ cmake -S . -B '$build' -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O1 \
+     -DPEDTRACK_SANITIZE=ON -DPEDTRACK_FUZZ=ON > /dev/null && cmake --build '$build' -j2"
+step "test suite under ASan + UBSan" ctest --test-dir "$build" -j2 --output-on-failure
+step "fuzzing (${PEDTRACK_FUZZ_SECONDS:-30} s per target)" scripts/fuzz.sh "$build"
+echo "== times"
+printf '  %s\n' "${times[@]}"

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer target of a PEDTRACK_FUZZ build (scripts/check.sh makes one) for a bounded
+# time each, on seeds made from the repository's real files, after replaying every input kept
+# in fuzz/regressions/TARGET/ (crashes found earlier, fixed since). A crash is written to
+# BUILD/fuzz-crashes/ and fails the script.
+#   scripts/fuzz.sh [BUILD_DIR]      (default build-check; PEDTRACK_FUZZ_SECONDS per target, 30)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$(cd "${1:-$root/build-check}" && pwd)
+secs=${PEDTRACK_FUZZ_SECONDS:-30}
+bin=$build/bin
+work=$build/fuzz-work
+crashes=$build/fuzz-crashes
+rm -rf "$work"
+mkdir -p "$work" "$crashes"
+cd "$root"
+
+# Seed corpora from real files: the shipped pipelines and scenarios, a model, the outputs and
+# a recording of a short run, VLP-16 packets and a Hokuyo session.
+mkdir -p "$work"/{pipeline_ini,scenario,csv,model,velodyne,rawlog,rosbag,scip}
+cp configs/*.ini "$work/pipeline_ini/"
+cp configs/scenarios/*.ini "$work/scenario/"
+cp models/torso_svm.yml "$work/model/"
+"$bin/pedtrack" run configs/people_2d_legs.ini --max-frames 12 --out "$work/run" \
+  --record "$work/rawlog/legs.rawlog" -q
+for f in tracks truth detections clusters; do
+  [ -f "$work/run/$f.csv" ] && head -n 40 "$work/run/$f.csv" > "$work/csv/$f.csv"
+done
+python3 scripts/fuzz_seeds.py "$work"
+
+declare -A max_len=([fuzz_pipeline_ini]=16384 [fuzz_scenario]=16384 [fuzz_csv]=16384
+  [fuzz_model]=131072 [fuzz_velodyne]=12060 [fuzz_rawlog]=65536 [fuzz_rosbag]=65536
+  [fuzz_scip]=16384)
+declare -A corpus=([fuzz_pipeline_ini]=pipeline_ini [fuzz_scenario]=scenario [fuzz_csv]=csv
+  [fuzz_model]=model [fuzz_velodyne]=velodyne [fuzz_rawlog]=rawlog [fuzz_rosbag]=rosbag
+  [fuzz_scip]=scip)
+status=0
+printf '%-18s %8s %10s %8s  %s\n' target seconds runs corpus result
+for target in fuzz_pipeline_ini fuzz_scenario fuzz_csv fuzz_model fuzz_velodyne fuzz_rawlog \
+  fuzz_rosbag fuzz_scip; do
+  [ -x "$bin/$target" ] || { printf '%-18s not built\n' "$target"; continue; }
+  log=$work/$target.log
+  start=$(date +%s)
+  result=ok
+  # Earlier crashes first: each must now pass.
+  if compgen -G "fuzz/regressions/$target/*" > /dev/null; then
+    "$bin/$target" fuzz/regressions/$target/* > "$log.regressions" 2>&1 || result="regression failed"
+  fi
+  if [ "$result" = ok ]; then
+    "$bin/$target" "$work/${corpus[$target]}" -max_total_time="$secs" -rss_limit_mb=2048 \
+      -timeout=20 -max_len="${max_len[$target]}" -artifact_prefix="$crashes/$target-" \
+      -print_final_stats=1 > "$log" 2>&1 || result="CRASH (see $log, $crashes)"
+  fi
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" 2>/dev/null | grep -o '[0-9]*$' || echo -)
+  size=$(ls "$work/${corpus[$target]}" | wc -l)
+  printf '%-18s %8s %10s %8s  %s\n' "$target" "$(( $(date +%s) - start ))" "$runs" "$size" "$result"
+  [ "$result" = ok ] || status=1
+done
+exit $status
