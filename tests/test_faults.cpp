@@ -68,11 +68,6 @@ Outcome run(const std::string& pipeline, long frames, const std::vector<std::str
   return o;
 }
 
-// A count under run.json's input_warnings or a source counter: the first "name": N in the file.
-double counted(const std::string& json, const std::string& name) {
-  return jsonValue(json, name);
-}
-
 bool hasNonFinite(const std::string& csv) {
   std::string lower;
   for (char c : csv) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -110,9 +105,9 @@ void checkCase(const std::string& pipeline, long frames, const FaultCase& fc) {
   CHECK(jsonValue(o.json, "nonfinite_track_rows") == 0);
   // The warning: counted by the guard (input_warnings) or, for data that is odd but valid, by
   // the injector under the source (faults_*). "invalid_" is either kind of invalid return.
-  const double warned = fc.warning == "invalid_"
-                            ? counted(o.json, "invalid_ranges") + counted(o.json, "invalid_points")
-                            : counted(o.json, fc.warning);
+  const double warned = fc.warning == "invalid_" ? jsonValue(o.json, "invalid_ranges") +
+                                                       jsonValue(o.json, "invalid_points")
+                                                 : jsonValue(o.json, fc.warning);
   CHECK(warned > 0);
   CHECK_FALSE(hasNonFinite(o.csv));
   // Tracking goes on after the fault: tracks in the last ten frames, and the run reached them.

@@ -57,15 +57,19 @@ LoopbackHokuyo::Config fastDevice() {
 // A [source] section for CHokuyoURG on the device: MRPT's own keys, as rawlog-grabber takes them.
 // The stream ends after `idle` s without data (the device ran out of scans) unless `extra` says
 // otherwise.
-std::string sourceSection(int port, const std::string& extra = "end_on_idle = true\n",
-                          double idle = 4) {
+// `link`: how MRPT reaches the device (IP_DIR / PORT_DIR, or COM_port_LIN).
+std::string hokuyoSection(const std::string& link, const std::string& extra, double idle) {
   std::ostringstream s;
-  s << "[source]\nplugin = mrpt_sensor\ndriver = CHokuyoURG\nIP_DIR = 127.0.0.1\nPORT_DIR = "
-    << port
+  s << "[source]\nplugin = mrpt_sensor\ndriver = CHokuyoURG\n"
+    << link
     << "\nsensorLabel = HOKUYO_LOOP\nprocess_rate = 200\npose_z = 0.4\nidle_timeout = " << idle
     << "\n"
     << extra;
   return s.str();
+}
+std::string sourceSection(int port, const std::string& extra = "end_on_idle = true\n",
+                          double idle = 4) {
+  return hokuyoSection("IP_DIR = 127.0.0.1\nPORT_DIR = " + std::to_string(port), extra, idle);
 }
 
 // configs/people_2d_legs.ini with the device on `port` in place of its simulated [source].
@@ -83,9 +87,7 @@ void writeLegsPipeline(const std::string& path, int port) {
 // The same for a serial (USB) Hokuyo: MRPT's COM_port_LIN instead of IP_DIR / PORT_DIR.
 std::string serialSourceSection(const std::string& device_path,
                                 const std::string& extra = "end_on_idle = true\n") {
-  std::string s = sourceSection(0, extra);
-  const auto from = s.find("IP_DIR"), to = s.find('\n', s.find("PORT_DIR"));
-  return s.replace(from, to - from, "COM_port_LIN = " + device_path);
+  return hokuyoSection("COM_port_LIN = " + device_path, extra, 4);
 }
 
 struct Run {

@@ -141,6 +141,7 @@ class FaultInjector : public Sensor {
           scan->resizeScan(0);
           continue;
         }
+        if (!ranges) continue;  // no draw per return when no range fault is asked for
         for (std::size_t i = 0; i < scan->getScanSize(); ++i) {
           const auto v = spoiledRange(scan->maxRange);
           if (!v) continue;
@@ -153,6 +154,7 @@ class FaultInjector : public Sensor {
           pc->pointcloud->clear();
           continue;
         }
+        if (!ranges) continue;
         auto& map = *pc->pointcloud;
         for (std::size_t i = 0; i < map.size(); ++i) {
           float x, y, z;

@@ -95,14 +95,18 @@ std::size_t FrameGuard::clean(Frame& f) {
       auto& map = *pc->pointcloud;
       const auto &xs = map.getPointsBufferRef_x(), &ys = map.getPointsBufferRef_y(),
                  &zs = map.getPointsBufferRef_z();
-      std::vector<bool> drop(map.size(), false);
+      // Not finite, or exactly at the sensor: how drivers of organised clouds mark "no return".
+      const auto bad = [&](std::size_t i) {
+        return !std::isfinite(xs[i]) || !std::isfinite(ys[i]) || !std::isfinite(zs[i]) ||
+               (xs[i] == 0 && ys[i] == 0 && zs[i] == 0);
+      };
       long n_bad = 0;
-      for (std::size_t i = 0; i < map.size(); ++i)
-        // Not finite, or exactly at the sensor: how drivers of organised clouds mark "no return".
-        if (!std::isfinite(xs[i]) || !std::isfinite(ys[i]) || !std::isfinite(zs[i]) ||
-            (xs[i] == 0 && ys[i] == 0 && zs[i] == 0))
-          drop[i] = true, ++n_bad;
-      if (n_bad > 0) map.applyDeletionMask(drop);
+      for (std::size_t i = 0; i < map.size(); ++i) n_bad += bad(i);
+      if (n_bad > 0) {  // the mask is built only for a cloud that needs it
+        std::vector<bool> drop(map.size());
+        for (std::size_t i = 0; i < map.size(); ++i) drop[i] = bad(i);
+        map.applyDeletionMask(drop);
+      }
       bad_points += n_bad;
       points += map.size();
     } else if (auto* velo = dynamic_cast<mrpt::obs::CObservationVelodyneScan*>(obs.get())) {
