@@ -12,6 +12,7 @@
 #include <iostream>
 #include <thread>
 
+#include "bench_suite.h"
 #include "commands.h"
 #include "options.h"
 #include "pedtrack/errors.h"
@@ -94,7 +95,9 @@ int benchCommand(const std::vector<std::string>& args) {
   long frames = 200, repeat = 5;
   std::vector<std::string> plugin_path, sets;
   std::string model, samples;
-  long batch = 100;
+  long batch = 100, points = 0;
+  std::string csv;
+  SuiteOptions suite;
   opts.add_options()("scans", po::value(&scans)->default_value(100000),
                      "synthetic 2D scans to replay")(
       "beams", po::value(&beams)->default_value(1081), "beams per synthetic scan")(
@@ -108,6 +111,19 @@ int benchCommand(const std::vector<std::string>& args) {
       "repeat", po::value(&repeat)->default_value(5), "--pipeline: passes over the cached frames")(
       "topic", po::value(&topic), "--pipeline with a bag --input: its topics")(
       "set", po::value(&sets)->composing(), "--pipeline: override a key, section.key=value")(
+      "points", po::value(&points)->default_value(0),
+      "--pipeline: resample every frame's cloud to this many points first (0: as read)")(
+      "csv", po::value(&csv), "--pipeline: also write the figures to this CSV")(
+      "suite", "run the whole benchmark suite and write --report (BENCHMARKS.md)")(
+      "report", po::value(&suite.out)->default_value("BENCHMARKS.md"), "--suite: the report")(
+      "work", po::value(&suite.work)->default_value("out/bench"),
+      "--suite: directory for its runs and logs")(
+      "source", po::value(&suite.source_dir),
+      "--suite: the checkout whose configs/ it runs (default: found from here)")(
+      "quick", "--suite: tiny sizes, a minute or two, to check the suite itself")(
+      "soak-seconds", po::value(&suite.soak_seconds)->default_value(3600),
+      "--suite: simulated seconds of each soak run")(
+      "jobs", po::value(&suite.jobs)->default_value(2), "--suite: accuracy runs at once")(
       "model", po::value(&model), "bench this classifier model instead (with --samples)")(
       "samples", po::value(&samples), "--model: labelled samples CSV whose vectors are scored")(
       "batch", po::value(&batch)->default_value(100), "--model: clusters scored per call")(
@@ -118,11 +134,30 @@ int benchCommand(const std::vector<std::string>& args) {
   if (scans < 1 || beams < 2)
     throw ConfigError("pedtrack bench: --scans must be >= 1 and --beams >= 2");
 
+  if (vm.count("suite")) {
+    if (!(suite.soak_seconds >= 1 && suite.soak_seconds <= 36000))
+      throw ConfigError("pedtrack bench: --soak-seconds must be within [1, 36000]");
+    if (suite.jobs < 1) throw ConfigError("pedtrack bench: --jobs must be >= 1");
+    suite.quick = vm.count("quick") > 0;
+    suite.plugin_path = plugin_path;
+    return benchSuite(suite);
+  }
   if (!model.empty()) return benchModel(model, samples, batch, repeat);
   if (!pipeline.empty()) {
     if (frames < 1 || repeat < 1)
       throw ConfigError("pedtrack bench: --frames and --repeat must be >= 1");
-    return benchStages(pipeline, input, topic, sets, frames, repeat, plugin_path);
+    if (points < 0) throw ConfigError("pedtrack bench: --points must be >= 0");
+    StageBenchOptions o;
+    o.pipeline = pipeline;
+    o.input = input;
+    o.topic = topic;
+    o.sets = sets;
+    o.plugin_path = plugin_path;
+    o.frames = frames;
+    o.repeat = repeat;
+    o.points = points;
+    o.csv = csv;
+    return benchStages(o);
   }
   if (!scenario.empty()) return benchScenario(scenario, out, plugin_path);
   std::string log = input;

@@ -21,11 +21,17 @@ int evalClassifierCommand(const std::vector<std::string>& args);
 /// `pedtrack eval --decisions`: a run's person / non-person decisions against simulated truth.
 int evalDecisionsCommand(const std::vector<std::string>& args);
 
+struct StageBenchOptions {
+  std::string pipeline, input, topic;
+  std::vector<std::string> sets, plugin_path;
+  long frames = 200, repeat = 5;
+  long points = 0;  ///< > 0: every cached cloud resampled to this many points
+  std::string csv;  ///< non-empty: the figures also go to this CSV (read by `bench --suite`)
+};
+
 /// `pedtrack bench --pipeline`: the stages of a pipeline timed on frames read (and decoded)
 /// beforehand, so the figures are the stages' own.
-int benchStages(const std::string& pipeline, const std::string& input, const std::string& topic,
-                const std::vector<std::string>& sets, long frames, long repeat,
-                const std::vector<std::string>& plugin_path);
+int benchStages(const StageBenchOptions& options);
 
 /// `pedtrack bench --model`: a classifier model timed on batches of a samples file's vectors.
 int benchModel(const std::string& model, const std::string& samples, long batch, long repeat);

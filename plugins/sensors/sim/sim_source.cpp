@@ -11,10 +11,19 @@
 namespace pedtrack::simsource {
 namespace {
 
+// The scenario with its [scenario] duration replaced when `duration` > 0: shorter for a quick
+// look, longer for a soak (a [crowd]'s random walkers keep choosing new goals).
+sim::Scenario withDuration(sim::Scenario s, double duration) {
+  if (duration > 0) s.duration = duration;
+  return s;
+}
+
 class SimSource : public Sensor {
  public:
   explicit SimSource(const PluginContext& ctx)
-      : sim_(sim::loadScenario(ctx.params.getString("scenario"), ctx.params.getInt("seed"))),
+      : sim_(withDuration(
+            sim::loadScenario(ctx.params.getString("scenario"), ctx.params.getInt("seed")),
+            ctx.params.getDouble("duration"))),
         realtime_(ctx.params.getString("rate") == "realtime"),
         truth_key_(ctx.params.getString("truth")),
         point_truth_(ctx.params.getBool("point_truth")),
@@ -87,6 +96,8 @@ PluginDescriptor describe() {
       ParamSpec::inputFile("scenario", "scenario file (configs/scenarios/*.ini)"),
       ParamSpec::integer("seed", -1, "", -1, 4294967295.0,
                          "random seed (-1: the scenario's own [scenario] seed)"),
+      ParamSpec::real("duration", 0, "s", 0, 36000,
+                      "simulated time (0: the scenario's own [scenario] duration)"),
       ParamSpec::choice("rate", "max", {"max", "realtime"},
                         "max: as fast as the pipeline runs; realtime: at the sensor's rate"),
       ParamSpec::text("truth", std::string("auto"),
