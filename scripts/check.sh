@@ -25,6 +25,7 @@ step "build (clang, ASan + UBSan + fuzzer coverage)" bash -c \
   "CC=clang CXX=clang++ cmake -S . -B '$build' -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O1 \
      -DPEDTRACK_SANITIZE=ON -DPEDTRACK_FUZZ=ON > /dev/null && cmake --build '$build' -j2"
 step "test suite under ASan + UBSan" ctest --test-dir "$build" -j2 --output-on-failure
-step "fuzzing (${PEDTRACK_FUZZ_SECONDS:-30} s per target)" scripts/fuzz.sh "$build"
+export PEDTRACK_FUZZ_SECONDS=${PEDTRACK_FUZZ_SECONDS:-20}
+step "fuzzing ($PEDTRACK_FUZZ_SECONDS s per target)" scripts/fuzz.sh "$build"
 echo "== times"
 printf '  %s\n' "${times[@]}"

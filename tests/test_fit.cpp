@@ -10,10 +10,12 @@
 #include "pedtrack/fit/circle.h"
 #include "pedtrack/fit/ellipse.h"
 #include "pedtrack/fit/plane.h"
+#include "test_support.h"
 
 using namespace pedtrack;
 using fit::Circle;
 using fit::Points2;
+using pedtrack::test::kSanitized;
 
 namespace {
 
@@ -204,7 +206,8 @@ TEST_CASE("P3 bounded circle equals Ipopt's solution of P3 eq. 1 (or beats it)",
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0, 1);
   int compared = 0, better = 0, on_bound = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  const int trials = kSanitized ? 60 : 300;  // Ipopt from six starts per trial is slow there
+  for (int trial = 0; trial < trials; ++trial) {
     // Leg-like arcs: radius 1-12 cm, 40-200° of it seen, 3-30 points, 0-1.5 cm noise.
     const double r = 0.01 + 0.11 * u(rng), span = (40 + 160 * u(rng)) * M_PI / 180;
     const double a0 = 2 * M_PI * u(rng);
@@ -233,9 +236,9 @@ TEST_CASE("P3 bounded circle equals Ipopt's solution of P3 eq. 1 (or beats it)",
     on_bound += ours.r == 0.03 || ours.r == 0.07;
   }
   // Ipopt, started elsewhere, finds our answer in most trials and never anything lower.
-  CHECK(compared + better == 300);
-  CHECK(compared >= 240);
-  CHECK(on_bound > 50);  // the bounds were active in many trials
+  CHECK(compared + better == trials);
+  CHECK(compared >= trials * 4 / 5);
+  CHECK(on_bound > trials / 6);  // the bounds were active in many trials
 }
 
 TEST_CASE("P3 bounded circle: collinear points, uneven too, get the largest circle",

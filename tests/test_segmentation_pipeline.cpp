@@ -28,9 +28,13 @@ double json(const std::string& text, const std::string& key, const std::string& 
 }
 
 // Simulates `scenario` into DIR, runs segment_3d.ini on it and returns `pedtrack eval --json`.
-std::string segment3d(const std::string& scenario, const std::string& tag) {
+// Under the sanitizers only its first `sanitized_seconds`.
+std::string segment3d(const std::string& scenario, const std::string& tag,
+                      double sanitized_seconds) {
   const std::string dir = freshDir(tag);
-  REQUIRE(runHost({"sim", kConfigs + "scenarios/" + scenario, "--out", dir, "-q"}).exit_code == 0);
+  std::vector<std::string> sim{"sim", kConfigs + "scenarios/" + scenario, "--out", dir, "-q"};
+  if (kSanitized) sim.insert(sim.end(), {"--duration", std::to_string(sanitized_seconds)});
+  REQUIRE(runHost(sim).exit_code == 0);
   const auto run = runHost({"run", kConfigs + "segment_3d.ini", "--input", dir + "/sim.rawlog",
                             "--out", dir + "/run", "-q"});
   REQUIRE(run.exit_code == 0);
@@ -82,8 +86,8 @@ std::size_t nearGround(const std::string& text, int frames) {
 
 TEST_CASE("ground tilted 5 deg: plane within 1 deg, >= 99 % of ground and <= 1 % of people removed",
           "[segmentation]") {
-  const std::string r = segment3d("tilted_ground.ini", "seg_tilted");
-  CHECK(json(r, "plane_frames") == 200);
+  const std::string r = segment3d("tilted_ground.ini", "seg_tilted", 5);
+  CHECK(json(r, "plane_frames") == (kSanitized ? 50 : 200));
   CHECK(json(r, "plane_angle_max_deg") < 1.0);
   CHECK(json(r, "ground_removed") >= 0.99);
   CHECK(json(r, "person_as_ground") <= 0.01);
@@ -94,10 +98,11 @@ TEST_CASE("ground tilted 5 deg and half hidden by a crowd: the seed mesh holds t
   // Half hidden: the crowd removes at least half of the ground returns IRLS fits (within 10 m).
   std::string text = readFile(kConfigs + "scenarios/tilted_ground_crowd.ini");
   const std::string open = text.substr(0, text.find("[crowd]"));
-  const std::size_t with = nearGround(text, 20), without = nearGround(open, 20);
+  const int frames = kSanitized ? 5 : 20;
+  const std::size_t with = nearGround(text, frames), without = nearGround(open, frames);
   INFO("ground returns within 10 m: " << with << " with the crowd, " << without << " without");
   CHECK(with <= without / 2);
-  const std::string r = segment3d("tilted_ground_crowd.ini", "seg_tilted_crowd");
+  const std::string r = segment3d("tilted_ground_crowd.ini", "seg_tilted_crowd", 2);
   CHECK(json(r, "plane_angle_max_deg") < 1.0);
   CHECK(json(r, "ground_removed") >= 0.99);
   CHECK(json(r, "person_as_ground") <= 0.01);
@@ -105,8 +110,8 @@ TEST_CASE("ground tilted 5 deg and half hidden by a crowd: the seed mesh holds t
 
 TEST_CASE("20-person crowd, static robot: isolated people are one cluster in >= 98 % of frames",
           "[segmentation]") {
-  const std::string r = segment3d("crowd.ini", "seg_crowd");
-  CHECK(json(r, "samples", "isolated") > 2000);
+  const std::string r = segment3d("crowd.ini", "seg_crowd", 8);
+  CHECK(json(r, "samples", "isolated") > (kSanitized ? 500 : 2000));
   CHECK(json(r, "correct", "isolated") >= 0.98);
   // Merges with other people happen only where people come close (reported for all people).
   CHECK(json(r, "merged_person", "isolated") <= 0.005);
@@ -115,8 +120,8 @@ TEST_CASE("20-person crowd, static robot: isolated people are one cluster in >= 
 
 TEST_CASE("20-person crowd, moving robot: isolated people are one cluster in >= 98 % of frames",
           "[segmentation]") {
-  const std::string r = segment3d("crowd_moving_robot.ini", "seg_crowd_moving");
-  CHECK(json(r, "samples", "isolated") > 2000);
+  const std::string r = segment3d("crowd_moving_robot.ini", "seg_crowd_moving", 8);
+  CHECK(json(r, "samples", "isolated") > (kSanitized ? 500 : 2000));
   CHECK(json(r, "correct", "isolated") >= 0.98);
   CHECK(json(r, "ground_removed") >= 0.99);
 }

@@ -7,6 +7,15 @@
 
 namespace pedtrack::test {
 
+/// A sanitizer build (scripts/check.sh, PEDTRACK_SANITIZED): there the longest simulations and
+/// pipelines run 5-40 times slower, so those tests run shorter versions of the same code paths
+/// (fewer frames, smaller clouds) to keep the suite inside CI's time.
+#ifdef PEDTRACK_SANITIZED
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+
 struct CommandResult {
   int exit_code = -1;
   std::string output;  ///< stdout and stderr together
