@@ -281,3 +281,13 @@ TEST_CASE("a model file found by fuzzing (support vector indices past the vector
   CHECK_THROWS_WITH(pedtrack::classify::loadScorer(path),
                     Catch::Contains("svm_index_past_vectors.yml: SVM model: support vector index"));
 }
+
+TEST_CASE("a model file found by fuzzing (a matrix with no rows) is refused before allocating",
+          "[classify][fuzz]") {
+  // fuzz/regressions/fuzz_model: "rows: ~" made OpenCV's reader allocate 17 GB.
+  const std::string path =
+      std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/matrix_rows_missing.yml";
+  CHECK_THROWS_WITH(pedtrack::classify::loadScorer(path),
+                    Catch::Contains("matrix_rows_missing.yml: matrix 'svm.class_weights': rows × "
+                                    "cols do not match its data"));
+}

@@ -67,6 +67,37 @@ Eigen::MatrixXd toEigen(const cv::Mat& m) {
 }
 
 // An open, checked model file: format, version, kind and end marker verified.
+// Every `!!opencv-matrix` under `n` (a map with rows, cols, dt and data) must have as many data
+// values as rows × cols × channels, with rows and cols whole numbers of at most 10^7: OpenCV's
+// reader allocates rows × cols first, so a corrupt "rows" asked it for gigabytes (found by
+// fuzz_model). Returns the first bad matrix's key path, "" when all are sound.
+std::string badMatrix(const cv::FileNode& n, const std::string& at) {
+  if (n.isMap() && !n["rows"].empty() && !n["cols"].empty() && !n["dt"].empty() &&
+      !n["data"].empty()) {
+    const cv::FileNode rows = n["rows"], cols = n["cols"], dt = n["dt"], data = n["data"];
+    if (!rows.isInt() || !cols.isInt() || !dt.isString() || !data.isSeq()) return at;
+    const long r = int(rows), c = int(cols);
+    const std::string type = std::string(dt);
+    const long channels = !type.empty() && std::isdigit(static_cast<unsigned char>(type[0]))
+                              ? std::strtol(type.c_str(), nullptr, 10)
+                              : 1;
+    if (r < 0 || c < 0 || r > 10000000 || c > 10000000 || channels < 1 ||
+        r * c * channels != static_cast<long>(data.size()))
+      return at;
+    return "";
+  }
+  if (n.isMap() || n.isSeq()) {
+    std::size_t i = 0;
+    for (auto it = n.begin(); it != n.end(); ++it, ++i) {
+      const cv::FileNode child = *it;
+      const std::string name = n.isMap() ? child.name() : "[" + std::to_string(i) + "]";
+      if (std::string bad = badMatrix(child, at.empty() ? name : at + "." + name); !bad.empty())
+        return bad;
+    }
+  }
+  return "";
+}
+
 class ModelReader {
  public:
   ModelReader(const std::string& path, const std::string& want_kind) : path_(path) {
@@ -87,6 +118,8 @@ class ModelReader {
            std::to_string(kModelFormatVersion) + " (retrain it with `pedtrack train`)");
     if (fs_["end"].empty() || std::string(fs_["end"]) != kFormat)
       fail("truncated model file (no end marker)");
+    if (const std::string bad = badMatrix(fs_.root(), ""); !bad.empty())
+      fail("matrix '" + bad + "': rows × cols do not match its data");
     info.kind = std::string(fs_["kind"]);
     if (!want_kind.empty() && info.kind != want_kind)
       fail("holds a '" + info.kind + "' model, not '" + want_kind + "'");
