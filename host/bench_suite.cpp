@@ -157,9 +157,11 @@ int benchSuite(const SuiteOptions& options) {
                  PEDTRACK_BUILD_TYPE);
 
   const MachineInfo m = machineInfo(ctx.source_dir, PEDTRACK_BUILD_TYPE);
-  const auto t0 = std::chrono::steady_clock::now();
-  std::string body =
-      speedSection(ctx) + scalingSection(ctx) + accuracySection(ctx) + soakSection(ctx);
+  // One after the other, in the report's order (the operands of + run in any order).
+  std::string body = speedSection(ctx);
+  body += scalingSection(ctx);
+  body += accuracySection(ctx);
+  body += soakSection(ctx);
   const double minutes =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / 60;
 
