@@ -157,6 +157,7 @@ int benchSuite(const SuiteOptions& options) {
                  PEDTRACK_BUILD_TYPE);
 
   const MachineInfo m = machineInfo(ctx.source_dir, PEDTRACK_BUILD_TYPE);
+  const auto t0 = std::chrono::steady_clock::now();
   // One after the other, in the report's order (the operands of + run in any order).
   std::string body = speedSection(ctx);
   body += scalingSection(ctx);
