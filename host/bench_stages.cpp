@@ -46,14 +46,9 @@ Frame resampled(const Frame& f, std::size_t n, std::mt19937& rng) {
   std::uniform_real_distribution<float> jitter(-0.02f, 0.02f);
   for (std::size_t i = 0; m > 0 && i < n; ++i) {
     float x, y, z;
-    if (n <= m) {
-      src.getPoint(i * m / n, x, y, z);
-      map->insertPointFast(x, y, z);
-    } else {
-      src.getPoint(i % m, x, y, z);
-      if (i >= m) x += jitter(rng), y += jitter(rng), z += jitter(rng);
-      map->insertPointFast(x, y, z);
-    }
+    src.getPoint(n <= m ? i * m / n : i % m, x, y, z);
+    if (i >= m) x += jitter(rng), y += jitter(rng), z += jitter(rng);  // a repeated return
+    map->insertPointFast(x, y, z);
   }
   map->mark_as_modified();
   auto pc = mrpt::obs::CObservationPointCloud::Create();

@@ -86,7 +86,10 @@ std::string speedSection(const SuiteContext& ctx) {
       "peak RSS |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const auto& f = figs[i];
-    md += "| " + runs[i].label + " (`" + runs[i].config + "`) | " + runs[i].load +
+    // Frames a stage threw on are left out of the timings: say so where it happened.
+    const std::string failed =
+        f.failed ? mrpt::format(" (**%ld frames failed**, not timed)", f.failed) : "";
+    md += "| " + runs[i].label + " (`" + runs[i].config + "`) | " + runs[i].load + failed +
           mrpt::format(" | %.0f | %.1f | %.0f | ", f.points, f.tracks, f.framesPerSecond()) +
           ms(f.total().p50) + " | " + ms(f.total().p99) + " | " + ms(f.total().max) + " | " +
           mb(f.peak_rss_kb) + " |\n";
