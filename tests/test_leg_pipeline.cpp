@@ -86,8 +86,9 @@ TEST_CASE("negative_2_merged.ini confirms few people where there are none", "[le
                           kConfigs + "negative_2_merged.ini' --out '" + dir + "' -q");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  // Measured: 14 confirmed tracks in 57.8 s (146 without static_scene). The scan matcher ran.
-  CHECK(trackIds(dir + "/tracks.csv").size() <= 25);
+  // Measured: 6 confirmed tracks in 57.8 s (15 without confirm_stride, 62 without
+  // static_scene). The scan matcher ran.
+  CHECK(trackIds(dir + "/tracks.csv").size() <= 10);
   CHECK(jsonValue(readFile(dir + "/run.json"), "scan_matches") >= 400);
 }
 #endif  // PEDTRACK_WITH_ROSBAG

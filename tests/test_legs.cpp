@@ -229,6 +229,30 @@ TEST_CASE("legs the classifier scores low are confirmed only after moving_confir
   CHECK(first_confirmed_x > -2 + 1.0);
 }
 
+TEST_CASE("a pair that slides along without scissoring is not confirmed (confirm_stride)",
+          "[legs]") {
+  // Two leg-like objects 0.18 m apart gliding at 1 m/s for 3 s, as a wall segment does when the
+  // robot's own motion is mis-estimated; a walker at the same speed swings its legs 0.25 m.
+  auto run = [](double confirm_stride, double swing) {
+    LegPeopleParams p;
+    p.confirm_stride = confirm_stride;
+    LegPeopleTracker tr(p);
+    bool confirmed = false;
+    for (int k = 0; k < 30; ++k) {
+      const double t = 0.1 * k, x = -1.5 + 1.0 * t;
+      const double lp = swing * std::sin(2 * M_PI * 0.9 * t);
+      std::vector<LegDetection> legs{{{x + lp / 2, 0.09}, 0.9, {0, 0}, -1},
+                                     {{x - lp / 2, -0.09}, 0.9, {0, 0}, -1}};
+      tr.step(t, legs, {});
+      for (const PersonState& s : tr.people()) confirmed = confirmed || s.confirmed;
+    }
+    return confirmed;
+  };
+  CHECK_FALSE(run(0.1, 0.0));  // rigid glide: never a person
+  CHECK(run(0.0, 0.0));        // the rule off: confirmed by travel alone (so the rule decides)
+  CHECK(run(0.1, 0.25));       // a walker's scissoring legs: confirmed
+}
+
 TEST_CASE("a passing person does not take a static door jamb as their hidden leg", "[legs]") {
   LegPeopleParams p;
   LegPeopleTracker tr(p);

@@ -29,6 +29,8 @@ struct LegPeopleTracker::Person {
   long left = -1, right = -1;  // object ids of the legs, -1 none
   Eigen::Vector2d origin;
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
+  // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
+  double stride_min = INFINITY, stride_max = -INFINITY;
   double score_sum = 0;
   int score_n = 0;
   bool confirmed = false, seen = false;
@@ -37,6 +39,8 @@ struct LegPeopleTracker::Person {
 };
 
 namespace {
+// m/s: below this the filter's velocity (and so the sagittal axis) is mostly noise.
+constexpr double kStrideMinSpeed = 0.2;
 // Objects are appended with increasing ids and erased in place, so objects_ stays sorted by id.
 template <class V>
 auto findObject(V& objects, long id) -> decltype(objects.front().get()) {
@@ -160,7 +164,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       slot = best->id;
       // A tentative person proves itself by walking on its own legs: one that hops from object to
       // object (a cluster of chair and table legs) starts its travel over with each new leg.
-      if (!P.confirmed) P.origin = {P.est.x(), P.est.y()}, P.travelled = 0;
+      if (!P.confirmed) {
+        P.origin = {P.est.x(), P.est.y()};
+        P.travelled = 0;
+        P.stride_min = INFINITY, P.stride_max = -INFINITY;
+      }
       (side == 0 ? l : r) = {true, best->pos()};
     }
     P.seen = l.seen || r.seen;
@@ -184,15 +192,22 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // Travel counts only where a leg was seen: a coasting filter that extrapolates a jump (a leg
     // re-associated to clutter) would otherwise confirm a ghost without any measurement.
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
+    // Gait evidence: the legs' separation along the direction of motion swings as they scissor.
+    const Eigen::Vector2d v = P.est.velocity();
+    if (!P.confirmed && l.seen && r.seen && v.norm() > kStrideMinSpeed) {
+      const double sagittal = (l.p - r.p).dot(v.normalized());
+      P.stride_min = std::min(P.stride_min, sagittal);
+      P.stride_max = std::max(P.stride_max, sagittal);
+    }
+    const bool strode = p_.confirm_stride <= 0 || P.stride_max - P.stride_min >= p_.confirm_stride;
     // Nor is a person confirmed while faster than a brisk walk: that speed is, far more often
     // than a runner, the filter reacting to a leg that jumped to a neighbouring object.
-    if (!P.confirmed && P.seen && P.travelled >= p_.confirm_travel &&
+    if (!P.confirmed && P.seen && strode && P.travelled >= p_.confirm_travel &&
         P.est.velocity().norm() <= p_.max_confirm_speed &&
         (P.score_sum / std::max(1, P.score_n) >= p_.leg_score ||
          P.travelled >= p_.moving_confirm_travel))
       P.confirmed = true;
     // Walking backwards fast for long is a facing chosen wrong at the start.
-    const Eigen::Vector2d v = P.est.velocity();
     const Eigen::Vector2d fwd(std::cos(P.est.yaw()), std::sin(P.est.yaw()));
     P.backwards = v.norm() > p_.flip_speed && v.dot(fwd) < 0 ? P.backwards + dt_person : 0;
     if (P.backwards >= p_.flip_time) {

@@ -36,6 +36,7 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.max_confirm_speed = s.getDouble("max_confirm_speed");
   p.pair_distance = s.getDouble("pair_distance");
   p.confirm_travel = s.getDouble("confirm_travel");
+  p.confirm_stride = s.getDouble("confirm_stride");
   p.max_coast = s.getDouble("max_coast");
   p.reacquire_spread = s.getDouble("reacquire_spread");
   p.reacquire_max = s.getDouble("reacquire_max");
@@ -267,6 +268,10 @@ PluginDescriptor describe() {
                       "two legs at most this far apart form a person"),
       ParamSpec::real("confirm_travel", def.confirm_travel, "m", 0, 100,
                       "a new person is confirmed (reported) once it moved this far"),
+      ParamSpec::real("confirm_stride", def.confirm_stride, "m", 0, 10,
+                      "... and once its legs scissored: their separation along its motion swung "
+                      "over this range (two objects slid together by the robot's motion never "
+                      "do); 0: off"),
       ParamSpec::real("max_coast", def.max_coast, "s", 0, 3600,
                       "a person with neither leg seen this long is deleted"),
       ParamSpec::real("reacquire_spread", def.reacquire_spread, "m/s", 0, 100,

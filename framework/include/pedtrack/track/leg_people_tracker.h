@@ -9,7 +9,8 @@
 //  - two free objects that look like legs (mean classifier score) and stand close together
 //    become a tentative person, never where the static scene says a wall or furniture stands;
 //  - a person is confirmed once it has moved (legs' classifier confidence and motion, as
-//    leg_tracker confirms), and deleted after a stretch with neither leg seen.
+//    leg_tracker confirms) with legs that scissor as a walker's do, and deleted after a stretch
+//    with neither leg seen.
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
@@ -40,6 +41,11 @@ struct LegPeopleParams {
   /// m, a person whose legs score below leg_score is confirmed once it moved this far instead.
   double moving_confirm_travel = 1.0;
   double max_confirm_speed = 2.0;  ///< m/s, no person is confirmed while estimated faster
+  /// m, a walker's legs scissor: the sagittal part of the leg vector (along the person's motion,
+  /// both legs seen) must have swung over at least this range before they are confirmed. Two
+  /// objects that move rigidly together (a wall or chair slid by the robot's own motion, scans
+  /// merged out of step) never do; one step of a walker swings it by ~0.5 m. 0: off.
+  double confirm_stride = 0.1;
   double reacquire_spread =
       0.5;  ///< m/s, a confirmed person's missing-leg gate widens this fast while unseen
   double reacquire_max = 0.6;   ///< m, ... by at most this much
