@@ -203,7 +203,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // Nor is a person confirmed while faster than a brisk walk: that speed is, far more often
     // than a runner, the filter reacting to a leg that jumped to a neighbouring object.
     if (!P.confirmed && P.seen && strode && P.travelled >= p_.confirm_travel &&
-        P.est.velocity().norm() <= p_.max_confirm_speed &&
+        v.norm() <= p_.max_confirm_speed &&
         (P.score_sum / std::max(1, P.score_n) >= p_.leg_score ||
          P.travelled >= p_.moving_confirm_travel))
       P.confirmed = true;
