@@ -4,6 +4,7 @@
 // synthetic walk, and the multi-person tracker keeps two walkers apart.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 #include "pedtrack/track/gait_fit_ipopt.h"
@@ -295,6 +296,82 @@ TEST_CASE("a confirmed person hidden for two seconds is re-acquired by one leg",
     for (const PersonState& s : tr.people()) back |= s.id == id && s.seen;
   }
   CHECK(back);
+}
+
+TEST_CASE("with neither leg seen the velocity decays with coast_tau", "[legs]") {
+  // Walk along +x at 1 m/s for 2 s, then no leg for 1 s (ten scans): each prediction scales
+  // the velocity by exp(-dt / tau), so after ten 0.1 s scans it is exp(-2) of what it was and
+  // the person moved v0 * 0.1 * sum_k exp(-0.2 k), k = 1..10, = 0.3905 v0 (1.0 v0 held).
+  auto run = [](double tau) {
+    LegPoseParams p;
+    p.coast_tau = tau;
+    LegPoseEstimator est(p);
+    const Eigen::Vector2d sensor(0, -3);
+    auto legs = [](double t) {
+      const double lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      return std::make_pair(Eigen::Vector2d(t + lp / 2, 0.09), Eigen::Vector2d(t - lp / 2, -0.09));
+    };
+    est.start(0, legs(0).first, legs(0).second, 0);
+    for (int k = 1; k <= 20; ++k) {
+      est.predict(0.1 * k);
+      est.update({true, legs(0.1 * k).first}, {true, legs(0.1 * k).second}, sensor);
+    }
+    est.predict(2.1);
+    est.update({}, {}, sensor);  // the first scan without legs: predicted as usual
+    const Eigen::Vector2d v0 = est.velocity(), x0(est.x(), est.y());
+    for (int k = 1; k <= 10; ++k) {
+      est.predict(2.1 + 0.1 * k);
+      est.update({}, {}, sensor);
+    }
+    return std::make_tuple(v0.norm(), est.velocity().norm(),
+                           (Eigen::Vector2d(est.x(), est.y()) - x0).norm());
+  };
+  const auto [v0, v1, moved] = run(0.5);
+  REQUIRE(v0 > 0.5);
+  CHECK(v1 / v0 == Approx(std::exp(-2.0)).epsilon(1e-6));
+  CHECK(moved == Approx(0.3905 * v0).epsilon(0.01));
+  const auto [w0, w1, held] = run(0);
+  CHECK(w1 == Approx(w0).epsilon(1e-9));
+  CHECK(held == Approx(w0).epsilon(1e-6));
+}
+
+TEST_CASE("a confirmed walker lost behind others keeps their id when their legs reappear nearby",
+          "[legs]") {
+  // Walks along +x for 2 s (confirmed), vanishes for 1.5 s behind people passing in front,
+  // meanwhile turns left, and reappears walking along +y 1.3 m from where the track expects
+  // them: beyond the one-leg re-acquisition gate (leg_gate + 0.6 m), inside re-identification's
+  // (leg_gate + 1 m/s * 1.5 s).
+  auto run = [](double reidentify_speed) {
+    LegPeopleParams p;
+    p.reidentify_speed = reidentify_speed;
+    LegPeopleTracker tr(p);
+    const Eigen::Vector2d sensor(0, -5);
+    long before = 0, after = 0;
+    for (int k = 0; k <= 20; ++k) {
+      const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, sensor, -1}, {{x - lp / 2, -0.09}, 0.9, sensor, -1}},
+              {});
+    }
+    for (const PersonState& s : tr.people())
+      if (s.confirmed) before = s.id;
+    for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, {}, {});
+    for (int k = 0; k < 3; ++k) {
+      const double t = 3.6 + 0.1 * k, y = 1.3 + 0.1 * k, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      tr.step(t,
+              {{{0.3 - 0.09, y + lp / 2}, 0.9, sensor, -1},
+               {{0.3 + 0.09, y - lp / 2}, 0.9, sensor, -1}},
+              {});
+    }
+    for (const PersonState& s : tr.people())
+      if (s.confirmed && s.seen) after = s.id;
+    return std::make_pair(before, after);
+  };
+  const auto [before, after] = run(1.0);
+  REQUIRE(before > 0);
+  CHECK(after == before);
+  const auto [before_off, after_off] = run(0);  // off: a new, not yet confirmed person
+  REQUIRE(before_off > 0);
+  CHECK(after_off == 0);
 }
 
 TEST_CASE("resolve_swaps reads legs the wrong way round as swapped labels, not a turn about",

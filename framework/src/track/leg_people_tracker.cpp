@@ -245,6 +245,22 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
                 people_.end());
 }
 
+// The confirmed person lost from sight (neither leg tracked) predicted nearest to p, within
+// leg_gate plus reidentify_speed times their time unseen (at most reidentify_max); null if none.
+LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen::Vector2d& p) {
+  Person* best = nullptr;
+  double best_d = INFINITY;
+  if (p_.reidentify_speed <= 0) return nullptr;
+  for (auto& q : people_) {
+    if (!q->confirmed || q->seen || q->left >= 0 || q->right >= 0) continue;
+    const double radius =
+        p_.pose.leg_gate + std::min(p_.reidentify_speed * (t - q->last_seen), p_.reidentify_max);
+    const double d = (Eigen::Vector2d(q->est.x(), q->est.y()) - p).norm();
+    if (d < radius && d < best_d) best = q.get(), best_d = d;
+  }
+  return best;
+}
+
 void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& legs,
                                   const std::function<bool(double, double)>& is_static) {
   // Free, leg-like objects seen this scan, paired closest first.
@@ -277,20 +293,29 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
       const Eigen::Vector2d to_sensor = legs[std::size_t(a->det)].sensor - mid;
       yaw = std::atan2(to_sensor.y(), to_sensor.x());
     }
-    auto person = std::make_unique<Person>(p_.pose);
-    person->id = ++next_person_;
+    // A lost person re-identified keeps id, confirmation and score; the pose restarts at the
+    // new legs (facing as they walk, else as last known), W0 and gait are learned afresh.
+    Person* person = v.norm() <= p_.max_confirm_speed ? lostPersonNear(t, mid) : nullptr;
+    if (person) {
+      if (v.norm() < p_.init_speed) yaw = person->est.yaw();
+      person->est = LegPoseEstimator(p_.pose);
+    } else {
+      people_.push_back(std::make_unique<Person>(p_.pose));
+      person = people_.back().get();
+      person->id = ++next_person_;
+      person->origin = mid;
+      person->score_sum = a->meanScore() + b->meanScore();
+      person->score_n = 2;
+    }
     person->est.start(t, a->pos(), b->pos(), yaw);
     const bool a_left = person->est.left() == a->pos();
     person->left = a_left ? a->id : b->id;
     person->right = a_left ? b->id : a->id;
     a->person = b->person = person->id;
-    person->origin = mid;
     person->last_seen = person->last_step = t;
-    person->score_sum = a->meanScore() + b->meanScore();
-    person->score_n = 2;
+    person->backwards = 0;
     person->seen = true;
     person->cluster = legs[std::size_t(a->det)].cluster;
-    people_.push_back(std::move(person));
   }
 }
 

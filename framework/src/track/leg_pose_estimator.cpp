@@ -53,6 +53,7 @@ void LegPoseEstimator::predict(double t) {
     g_.x.tail<3>().setZero();
     const double v = g_.x.segment<2>(3).norm();
     if (v > kMaxCoastSpeed) g_.x.segment<2>(3) *= kMaxCoastSpeed / v;
+    if (p_.coast_tau > 0 && dt > 0) g_.x.segment<2>(3) *= std::exp(-dt / p_.coast_tau);
   }
   if (dt > 0) kalmanPredict(g_, model_, dt);
   g_.x(2) = wrapAngle(g_.x(2));

@@ -31,6 +31,9 @@ std::vector<ParamSpec> legPoseParamSpecs() {
                       "legs farther than this from both predicted legs are not the person's"),
       ParamSpec::integer("gait_frames", d.gait_frames, "frames", 5, 1000,
                          "N of eq. 3: the gait model's window (P3: 20, one gait cycle)"),
+      ParamSpec::real("coast_tau", d.coast_tau, "s", 0, 3600,
+                      "with neither leg seen the velocity decays with this time constant "
+                      "(people stop and turn when out of sight; 0: velocity held)"),
       ParamSpec::choice("gait_solver", "varpro", {"varpro", "ipopt"},
                         "eq. 3's solver: varpro (global in f, microseconds) or ipopt (local, "
                         "from the previous fit; P3 used a local method, COBYLA)"),
@@ -67,6 +70,7 @@ LegPoseParams readLegPoseParams(const ParamSet& s) {
   p.w0_time = s.getDouble("w0_time");
   p.leg_gate = s.getDouble("leg_gate");
   p.gait_frames = int(s.getInt("gait_frames"));
+  p.coast_tau = s.getDouble("coast_tau");
   const std::vector<double> b = s.getVector("gait_bounds");
   p.gait = {b[0], b[1], b[2], b[3], b[4], b[5]};
   if (!(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5] && b[2] > 0))

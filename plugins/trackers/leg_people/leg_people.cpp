@@ -40,6 +40,8 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.max_coast = s.getDouble("max_coast");
   p.reacquire_spread = s.getDouble("reacquire_spread");
   p.reacquire_max = s.getDouble("reacquire_max");
+  p.reidentify_speed = s.getDouble("reidentify_speed");
+  p.reidentify_max = s.getDouble("reidentify_max");
   p.max_leg_spread = s.getDouble("max_leg_spread");
   p.flip_speed = s.getDouble("flip_speed");
   p.flip_time = s.getDouble("flip_time");
@@ -279,6 +281,12 @@ PluginDescriptor describe() {
                       "a free leg becomes theirs widens this fast"),
       ParamSpec::real("reacquire_max", def.reacquire_max, "m", 0, 10,
                       "... by at most this much beyond leg_gate"),
+      ParamSpec::real("reidentify_speed", def.reidentify_speed, "m/s", 0, 100,
+                      "a confirmed person lost from sight takes back a new leg pair within "
+                      "leg_gate plus this speed times their time unseen of where they were "
+                      "predicted (keeps their id through occlusions); 0: off"),
+      ParamSpec::real("reidentify_max", def.reidentify_max, "m", 0, 100,
+                      "... that radius grows by at most this much beyond leg_gate"),
       ParamSpec::real("max_leg_spread", def.max_leg_spread, "m", 0.1, 10,
                       "a person's legs farther apart than this: the outer one is dropped"),
       ParamSpec::real("flip_speed", def.flip_speed, "m/s", 0, 100,

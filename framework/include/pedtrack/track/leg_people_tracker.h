@@ -8,6 +8,8 @@
 //    other objects by their own filter;
 //  - two free objects that look like legs (mean classifier score) and stand close together
 //    become a tentative person, never where the static scene says a wall or furniture stands;
+//  - a confirmed person lost from sight takes back a new leg pair near where they were predicted
+//    (re-identification), so walkers hidden by others in a crowd keep their ids;
 //  - a person is confirmed once it has moved (legs' classifier confidence and motion, as
 //    leg_tracker confirms) with legs that scissor as a walker's do, and deleted after a stretch
 //    with neither leg seen.
@@ -48,7 +50,13 @@ struct LegPeopleParams {
   double confirm_stride = 0.1;
   double reacquire_spread =
       0.5;  ///< m/s, a confirmed person's missing-leg gate widens this fast while unseen
-  double reacquire_max = 0.6;   ///< m, ... by at most this much
+  double reacquire_max = 0.6;  ///< m, ... by at most this much
+  /// m/s: a confirmed person lost from sight (neither leg tracked) takes back a new leg pair
+  /// that forms within leg_gate plus this speed times the time unseen of where they were
+  /// predicted, instead of the pair starting a new tentative person (a walker reappearing from
+  /// behind someone keeps their id and needs no second confirmation). 0: off.
+  double reidentify_speed = 1.0;
+  double reidentify_max = 2.0;  ///< m, ... the radius grows by at most this much
   double max_coast = 3.0;       ///< s, a person with no leg seen this long is deleted
   double max_leg_spread = 1.0;  ///< m, a person whose legs drift farther apart loses one
   double flip_speed = 0.5;      ///< m/s, walking backwards faster than this turns the track
@@ -101,6 +109,7 @@ class LegPeopleTracker {
   void associate(double t, const std::vector<LegDetection>& legs);
   void updatePeople(double t, const std::vector<LegDetection>& legs,
                     const std::function<bool(double, double)>& is_static);
+  Person* lostPersonNear(double t, const Eigen::Vector2d& p);
   void formPeople(double t, const std::vector<LegDetection>& legs,
                   const std::function<bool(double, double)>& is_static);
 

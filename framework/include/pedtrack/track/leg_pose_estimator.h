@@ -29,6 +29,11 @@ struct LegPoseParams {
   double w0_time = 3;        ///< s, W₀ is the mean frontal leg distance over this long
   double leg_gate = 0.4;     ///< m, a leg farther from both predicted legs is not this person's
   int gait_frames = 20;      ///< N of eq. 3 (P3: one gait cycle, 20 frames)
+  /// s, with neither leg seen the velocity decays with this time constant (0: held). A
+  /// pedestrian's velocity is mean-reverting: in company people stop, swerve and turn within a
+  /// second, so a lost person is looked for near where they vanished rather than where a
+  /// constant velocity would have carried them.
+  double coast_tau = 0.5;
   /// Eq. 3's solver: null = gait::fitVarPro; leg_pose can plug in gait::fitIpopt (a separate
   /// library, so the framework does not depend on Ipopt).
   gait::Params (*gait_solver)(const std::vector<gait::Sample>&, const gait::Bounds&,
