@@ -374,6 +374,36 @@ TEST_CASE("a confirmed walker lost behind others keeps their id when their legs 
   CHECK(after_off == 0);
 }
 
+TEST_CASE("a walker seen twice by scanners merged out of step is one person (merge_distance)",
+          "[legs]") {
+  // Each leg is detected twice, 0.15 m apart along the walk (the second scanner's scan taken
+  // 0.15 s later): two leg pairs that each look like a walker.
+  auto run = [](double merge_distance) {
+    LegPeopleParams p;
+    p.merge_distance = merge_distance;
+    LegPeopleTracker tr(p);
+    std::size_t most = 0, confirmed = 0;
+    for (int k = 0; k < 40; ++k) {
+      const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      std::vector<LegDetection> legs;
+      for (const double dx : {0.0, 0.15}) {
+        legs.push_back({{x + dx + lp / 2, 0.09}, 0.9, {0, -5}, -1});
+        legs.push_back({{x + dx - lp / 2, -0.09}, 0.9, {0, -5}, -1});
+      }
+      tr.step(t, legs, {});
+      std::size_t n = 0;
+      for (const PersonState& s : tr.people()) n += s.confirmed;
+      most = std::max(most, n);
+      confirmed = n;
+    }
+    return std::make_pair(most, confirmed);
+  };
+  const auto [most, last] = run(0.3);
+  CHECK(most == 1);
+  CHECK(last == 1);
+  CHECK(run(0).first == 2);  // off: the walker is reported twice
+}
+
 TEST_CASE("resolve_swaps reads legs the wrong way round as swapped labels, not a turn about",
           "[legs]") {
   ZoningParams p;

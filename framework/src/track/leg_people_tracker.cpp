@@ -232,6 +232,23 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       if (!person->confirmed && is_static(person->est.left().x(), person->est.left().y()) &&
           is_static(person->est.right().x(), person->est.right().y()))
         person->last_seen = -INFINITY;
+  // Two people closer than merge_distance are one: bodies do not interpenetrate. It is a person
+  // split in two (each leg seen twice by scanners merged out of step) or a lost track that
+  // coasted beside its person's new one. The tentative one goes, else the one seen less
+  // recently, else the newer.
+  if (p_.merge_distance > 0)
+    for (auto& a : people_)
+      for (auto& b : people_) {
+        if (a == b || a->last_seen == -INFINITY || b->last_seen == -INFINITY) continue;
+        // A confirmed person coasting beside one seen is likely hidden by them, not a copy.
+        if (a->confirmed && b->confirmed && !(a->seen && b->seen)) continue;
+        if (std::hypot(a->est.x() - b->est.x(), a->est.y() - b->est.y()) >= p_.merge_distance)
+          continue;
+        Person* drop = a->confirmed != b->confirmed   ? (a->confirmed ? b : a).get()
+                       : a->last_seen != b->last_seen ? (a->last_seen < b->last_seen ? a : b).get()
+                                                      : (a->id > b->id ? a : b).get();
+        drop->last_seen = -INFINITY;
+      }
   // Deleted people free their legs.
   for (auto& person : people_) {
     if (t - person->last_seen <= p_.max_coast) continue;

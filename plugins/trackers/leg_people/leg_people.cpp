@@ -40,6 +40,7 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.max_coast = s.getDouble("max_coast");
   p.reacquire_spread = s.getDouble("reacquire_spread");
   p.reacquire_max = s.getDouble("reacquire_max");
+  p.merge_distance = s.getDouble("merge_distance");
   p.reidentify_speed = s.getDouble("reidentify_speed");
   p.reidentify_max = s.getDouble("reidentify_max");
   p.max_leg_spread = s.getDouble("max_leg_spread");
@@ -287,6 +288,10 @@ PluginDescriptor describe() {
                       "predicted (keeps their id through occlusions); 0: off"),
       ParamSpec::real("reidentify_max", def.reidentify_max, "m", 0, 100,
                       "... that radius grows by at most this much beyond leg_gate"),
+      ParamSpec::real("merge_distance", def.merge_distance, "m", 0, 10,
+                      "two people closer than this are one (bodies do not interpenetrate): the "
+                      "tentative, else the one seen less recently, else the newer goes; two "
+                      "confirmed people only when both are seen; 0: off"),
       ParamSpec::real("max_leg_spread", def.max_leg_spread, "m", 0.1, 10,
                       "a person's legs farther apart than this: the outer one is dropped"),
       ParamSpec::real("flip_speed", def.flip_speed, "m/s", 0, 100,

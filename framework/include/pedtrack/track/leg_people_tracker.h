@@ -10,6 +10,8 @@
 //    become a tentative person, never where the static scene says a wall or furniture stands;
 //  - a confirmed person lost from sight takes back a new leg pair near where they were predicted
 //    (re-identification), so walkers hidden by others in a crowd keep their ids;
+//  - two people closer than a body is deep are one (a person split in two by scans merged out of
+//    step, a coasting track beside its person's new one): the weaker is deleted;
 //  - a person is confirmed once it has moved (legs' classifier confidence and motion, as
 //    leg_tracker confirms) with legs that scissor as a walker's do, and deleted after a stretch
 //    with neither leg seen.
@@ -58,6 +60,11 @@ struct LegPeopleParams {
   double reidentify_speed = 1.0;
   double reidentify_max = 2.0;  ///< m, ... the radius grows by at most this much
   double max_coast = 3.0;       ///< s, a person with no leg seen this long is deleted
+  /// m, two people whose centres come closer than this are one (bodies do not interpenetrate):
+  /// the tentative, else the one seen less recently, else the newer is deleted. Two confirmed
+  /// people merge only when both are seen this scan (one coasting beside a seen one is most
+  /// likely hidden by them). 0: off.
+  double merge_distance = 0.3;
   double max_leg_spread = 1.0;  ///< m, a person whose legs drift farther apart loses one
   double flip_speed = 0.5;      ///< m/s, walking backwards faster than this turns the track
   double flip_time = 0.5;       ///< s, ... for this long
