@@ -265,9 +265,9 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
 // The confirmed person lost from sight (neither leg tracked) predicted nearest to p, within
 // leg_gate plus reidentify_speed times their time unseen (at most reidentify_max); null if none.
 LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen::Vector2d& p) {
+  if (p_.reidentify_speed <= 0) return nullptr;
   Person* best = nullptr;
   double best_d = INFINITY;
-  if (p_.reidentify_speed <= 0) return nullptr;
   for (auto& q : people_) {
     if (!q->confirmed || q->seen || q->left >= 0 || q->right >= 0) continue;
     const double radius =
