@@ -1,14 +1,23 @@
 // The mrpt_sensor source driving a real MRPT driver: CVelodyneScanner replaying a pcap capture
-// made from the packets of MRPT's VLP-16 sample, configured with MRPT's own keys.
+// made from the packets of MRPT's VLP-16 sample, configured with MRPT's own keys. And the TCP
+// link it gives an Ethernet Hokuyo, whose writes return whatever the device does.
+#include <arpa/inet.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/serialization/CArchive.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <thread>
+#include <vector>
 
+#include "../plugins/sensors/mrpt_sensor/bounded_tcp_socket.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/pipeline.h"
 #include "test_support.h"
@@ -65,7 +74,80 @@ std::size_t writePcap(const std::string& path, int repeats) {
   return n;
 }
 
+// A listening TCP socket on 127.0.0.1 (an ephemeral port), as a device would be.
+struct LoopbackListener {
+  int fd = -1;
+  unsigned short port = 0;
+  LoopbackListener() {
+    fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t len = sizeof a;
+    REQUIRE(::bind(fd, reinterpret_cast<sockaddr*>(&a), len) == 0);
+    REQUIRE(::listen(fd, 1) == 0);
+    REQUIRE(::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len) == 0);
+    port = ntohs(a.sin_port);
+  }
+  int accept() const { return ::accept(fd, nullptr, nullptr); }
+  ~LoopbackListener() { ::close(fd); }
+};
+
+// mrpt_sensor's Hokuyo link connected to a listener: `peer` is the device's end.
+struct ConnectedLink {
+  LoopbackListener device;
+  pedtrack::mrpt_sensor::BoundedTcpSocket link;
+  int peer = -1;
+  ConnectedLink() {
+    link.connect("127.0.0.1", device.port);
+    peer = device.accept();
+    REQUIRE(peer >= 0);
+  }
+  ~ConnectedLink() {
+    if (peer >= 0) ::close(peer);
+  }
+};
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 }  // namespace
+
+// MRPT 2.5's own CClientTCPSocket retries a failed send() for ever: a Hokuyo that reset the
+// connection while CHokuyoURG reconfigured it hung the pipeline inside doProcess() (seen in CI).
+TEST_CASE("mrpt_sensor's Hokuyo link: a write to a reset connection returns and drops the link",
+          "[mrpt_sensor]") {
+  ConnectedLink c;
+  auto& link = c.link;
+  const linger reset{1, 0};  // close with RST, as a device that reboots
+  ::setsockopt(c.peer, SOL_SOCKET, SO_LINGER, &reset, sizeof reset);
+  ::close(c.peer);
+  c.peer = -1;
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the RST arrives
+  mrpt::io::CStream& stream = link;                            // as CHokuyoURG::sendCmd writes
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < 3; ++i) CHECK(stream.Write("QT\n", 3) == 3);
+  CHECK(secondsSince(t0) < 0.5);
+  CHECK_FALSE(link.isConnected());  // CHokuyoURG's next check reconnects
+  CHECK(link.failedWrites() == 1);
+}
+
+TEST_CASE("mrpt_sensor's Hokuyo link: a device that stops reading bounds a write to its timeout",
+          "[mrpt_sensor]") {
+  using pedtrack::mrpt_sensor::BoundedTcpSocket;
+  ConnectedLink c;  // the device never reads: the send buffers fill up
+  auto& link = c.link;
+  const std::vector<char> big(64 << 20, 'x');
+  mrpt::io::CStream& stream = link;
+  const auto t0 = std::chrono::steady_clock::now();
+  CHECK(stream.Write(big.data(), big.size()) == big.size());
+  const double took = secondsSince(t0);
+  CHECK(took >= BoundedTcpSocket::kWriteTimeoutMs * 1e-3 * 0.9);
+  CHECK(took < BoundedTcpSocket::kWriteTimeoutMs * 1e-3 + 2.0);
+  CHECK_FALSE(link.isConnected());
+  CHECK(link.failedWrites() == 1);
+}
 
 TEST_CASE("mrpt_sensor runs CVelodyneScanner from an unchanged rawlog-grabber section",
           "[mrpt_sensor]") {

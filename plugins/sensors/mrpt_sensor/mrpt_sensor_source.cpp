@@ -9,6 +9,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/hwdrivers/C2DRangeFinderAbstract.h>
 #include <mrpt/hwdrivers/CGenericSensor.h>
+#include <mrpt/hwdrivers/CHokuyoURG.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/system/datetime.h>
 #include <pthread.h>
@@ -21,6 +22,7 @@
 #include <sstream>
 #include <thread>
 
+#include "bounded_tcp_socket.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/pipeline.h"
 #include "pedtrack/plugin.h"
@@ -177,6 +179,7 @@ class MrptSensorSource : public Sensor {
           "' is not an MRPT sensor class (e.g. CHokuyoURG, CVelodyneScanner, CSickLaserUSB)");
     try {
       s->loadConfig(config_, section_);
+      bindEthernetLink(*s);
       s->initialize();
     } catch (...) {
       release(s, false);
@@ -187,10 +190,22 @@ class MrptSensorSource : public Sensor {
     in_error_ = false;
   }
 
+  // An Ethernet Hokuyo gets a link whose writes cannot hang (bounded_tcp_socket.h), connected here
+  // as CHokuyoURG would connect its own: a refused connection throws the same way.
+  void bindEthernetLink(mrpt::hwdrivers::CGenericSensor& s) const {
+    auto* hokuyo = dynamic_cast<mrpt::hwdrivers::CHokuyoURG*>(&s);
+    const std::string ip = config_.read_string(section_, "IP_DIR", "");
+    if (!hokuyo || ip.empty()) return;
+    auto link = std::make_shared<BoundedTcpSocket>();
+    link->connect(ip, static_cast<unsigned short>(config_.read_int(section_, "PORT_DIR", 10940)));
+    hokuyo->bindIO(link);
+  }
+
   // Destroys a driver. A 2D range finder's destructor first tells the device to stop (CHokuyoURG
-  // sends QT), but after a failed connection MRPT 2.5's TCP client still holds the dead socket,
-  // and its write loop retries the failing send() for ever. So unless the driver has just
-  // delivered data, its I/O is unbound first and the socket closes without a word to the device.
+  // sends QT), but after a failed connection MRPT 2.5's own TCP client (a driver on a link this
+  // source did not bind) still holds the dead socket, and its write loop retries the failing
+  // send() for ever. So unless the driver has just delivered data, its I/O is unbound first and
+  // the socket closes without a word to the device.
   static void release(mrpt::hwdrivers::CGenericSensor::Ptr& s, bool healthy) {
     SigpipeShield shield;  // the destructor may still talk to the device
     if (!healthy)
