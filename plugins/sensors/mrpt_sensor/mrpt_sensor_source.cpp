@@ -23,6 +23,7 @@
 #include <thread>
 
 #include "bounded_tcp_socket.h"
+#include "device_timed_hokuyo.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/pipeline.h"
 #include "pedtrack/plugin.h"
@@ -172,7 +173,10 @@ class MrptSensorSource : public Sensor {
 
   void open() {
     SigpipeShield shield;
-    auto s = mrpt::hwdrivers::CGenericSensor::createSensorPtr(driver_);
+    // CHokuyoURG as MRPT's, but stamped by the device's clock from the first scan.
+    mrpt::hwdrivers::CGenericSensor::Ptr s =
+        driver_ == "CHokuyoURG" ? std::make_shared<DeviceTimedHokuyo>()
+                                : mrpt::hwdrivers::CGenericSensor::createSensorPtr(driver_);
     if (!s)
       throw ConfigError(
           "driver: '" + driver_ +
@@ -219,6 +223,7 @@ class MrptSensorSource : public Sensor {
     bool error = false;
     try {
       SigpipeShield shield;
+      if (auto* hokuyo = dynamic_cast<DeviceTimedHokuyo*>(sensor_.get())) hokuyo->useDeviceClock();
       sensor_->doProcess();
       error = sensor_->getState() == mrpt::hwdrivers::CGenericSensor::ssError;
     } catch (const std::exception& e) {
