@@ -24,7 +24,12 @@ step() {  # step NAME COMMAND...
 step "build (clang, ASan + UBSan + fuzzer coverage)" bash -c \
   "CC=clang CXX=clang++ cmake -S . -B '$build' -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O1 \
      -DPEDTRACK_SANITIZE=ON -DPEDTRACK_FUZZ=ON > /dev/null && cmake --build '$build' -j2"
-step "test suite under ASan + UBSan" ctest --test-dir "$build" -j2 --output-on-failure
+step "test suite under ASan + UBSan" ctest --test-dir "$build" -j2 --output-on-failure -LE live
+# Tests against live devices on loopback (label `live`) get up to three attempts: what a device
+# streaming at its own pace delivers depends on how the host schedules the reader (a VM's CPU
+# steal lost whole VLP-16 revolutions). A test that fails three times still fails the run.
+step "live-device tests under ASan + UBSan" ctest --test-dir "$build" --output-on-failure -L live \
+  --repeat until-pass:3
 export PEDTRACK_FUZZ_SECONDS=${PEDTRACK_FUZZ_SECONDS:-20}
 step "fuzzing ($PEDTRACK_FUZZ_SECONDS s per target)" scripts/fuzz.sh "$build"
 echo "== times"
