@@ -190,6 +190,7 @@ class MrptSensorSource : public Sensor {
       throw;
     }
     sensor_ = std::move(s);
+    hokuyo_ = dynamic_cast<DeviceTimedHokuyo*>(sensor_.get());  // looked up once, not per call
     opened_at_ = Clock::now();
     in_error_ = false;
   }
@@ -223,7 +224,7 @@ class MrptSensorSource : public Sensor {
     bool error = false;
     try {
       SigpipeShield shield;
-      if (auto* hokuyo = dynamic_cast<DeviceTimedHokuyo*>(sensor_.get())) hokuyo->useDeviceClock();
+      if (hokuyo_) hokuyo_->useDeviceClock();
       sensor_->doProcess();
       error = sensor_->getState() == mrpt::hwdrivers::CGenericSensor::ssError;
     } catch (const std::exception& e) {
@@ -255,6 +256,7 @@ class MrptSensorSource : public Sensor {
     if (error) ++driver_errors_;
     warnOnce(why);
     release(sensor_, false);
+    hokuyo_ = nullptr;
     retry_at_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                    std::chrono::duration<double>(reconnect_delay_));
   }
@@ -289,6 +291,7 @@ class MrptSensorSource : public Sensor {
 
   std::string driver_, section_;
   mrpt::config::CConfigFileMemory config_;
+  DeviceTimedHokuyo* hokuyo_ = nullptr;  // sensor_ when it is a CHokuyoURG, else null
   double idle_timeout_;
   bool end_on_idle_;
   bool reconnect_;
