@@ -424,3 +424,110 @@ TEST_CASE("resolve_swaps reads legs the wrong way round as swapped labels, not a
   CHECK_FALSE(turn.swap);
   CHECK(angleDiff(turn.yaw, M_PI / 3) < 1e-9);
 }
+
+namespace {
+
+// A person facing `facing` walks forward along it at `speed` from the origin, legs scissoring
+// (0.9 Hz, L0 0.3 m) W = 0.18 m apart; returns (left, right) at t.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> walkerLegs(double t, double facing, double speed) {
+  const Eigen::Vector2d fwd(std::cos(facing), std::sin(facing)), left(-fwd.y(), fwd.x());
+  const Eigen::Vector2d c = speed * t * fwd;
+  const double lp = 0.3 * std::sin(2 * M_PI * 0.9 * t);
+  const Eigen::Vector2d half = 0.5 * (lp * fwd + 0.18 * left);
+  return {Eigen::Vector2d(c + half), Eigen::Vector2d(c - half)};
+}
+
+// Feeds the walker's legs (unlabelled) to `est` from t0 to t1 at 10 Hz; the times at which the
+// facing check turned the estimate round.
+std::vector<double> feedWalker(LegPoseEstimator& est, double t0, double t1, double facing,
+                               double speed) {
+  std::vector<double> turned;
+  for (double t = t0; t <= t1 + 1e-9; t += 0.1) {
+    est.predict(t);
+    const auto [l, r] = walkerLegs(t, facing, speed);
+    const std::vector<Eigen::Vector2d> cand{l, r};
+    const auto [li, ri] = est.associate(cand);
+    LegSeen sl, sr;
+    if (li >= 0) sl = {true, cand[std::size_t(li)]};
+    if (ri >= 0) sr = {true, cand[std::size_t(ri)]};
+    est.update(sl, sr, {5, 5});
+    if (est.turnedRound()) turned.push_back(t);
+  }
+  return turned;
+}
+
+}  // namespace
+
+TEST_CASE("the facing check turns round an estimate that walks backward too far", "[legs]") {
+  // The person faces −x and walks forward at 0.7 m/s; the estimate starts facing +x, with left
+  // and right swapped to match: the mirror image, which explains every scan as well.
+  const double facing = M_PI, speed = 0.7;
+  const auto [l0, r0] = walkerLegs(0, facing, speed);
+  SECTION("on: turned round once, within backward_walk_max + mirror_margin = 2.8 m") {
+    LegPoseEstimator est(LegPoseParams{});
+    est.start(0, l0, r0, 0);
+    const std::vector<double> turned = feedWalker(est, 0.1, 8, facing, speed);
+    REQUIRE(turned.size() == 1);
+    // At most 2.8 m at 0.7 m/s = 4 s (+ a scan); sooner when a doubtful reading shrank the
+    // evidence (one at 0.6 s here, as the first W0 and gait fit settle: turned at 3.4 s).
+    CHECK(turned[0] >= 2.0);
+    CHECK(turned[0] <= 4.15);
+    CHECK(angleDiff(est.yaw(), facing) < 10 * M_PI / 180);
+  }
+  SECTION("off (P3): the mirror image is kept") {
+    LegPoseParams p;
+    p.backward_walk_max = 0;
+    LegPoseEstimator est(p);
+    est.start(0, l0, r0, 0);
+    CHECK(feedWalker(est, 0.1, 8, facing, speed).empty());
+    CHECK(angleDiff(est.yaw(), 0) < 10 * M_PI / 180);
+  }
+}
+
+TEST_CASE("a reading of the legs the other way round is gated and makes the facing doubtful",
+          "[legs]") {
+  auto run = [](double gate) {
+    LegPoseParams p;
+    p.orientation_gate = gate;
+    LegPoseEstimator est(p);
+    const auto [l0, r0] = walkerLegs(0, 0, 0.7);
+    est.start(0, l0, r0, 0);
+    feedWalker(est, 0.1, 3, 0, 0.7);
+    const double before = est.yaw(), evidence = est.facingWalked();
+    est.predict(3.1);
+    const auto [l, r] = walkerLegs(3.1, 0, 0.7);
+    est.update({true, r}, {true, l}, {5, 5});  // labelled the other way round: a 180° reading
+    return std::make_tuple(angleDiff(est.yaw(), before), evidence, est.facingWalked());
+  };
+  const auto [moved, evidence, after] = run(3);
+  CHECK(evidence == Approx(LegPoseParams{}.backward_walk_max));  // a clean forward walk: capped
+  CHECK(std::abs(after) < 0.1);  // innovation ≥ 90°: as likely the mirror image as not
+  const auto [moved_ungated, e2, a2] = run(0);
+  CHECK(moved < 20 * M_PI / 180);      // measured 18°
+  CHECK(moved < 0.5 * moved_ungated);  // measured 80° ungated
+}
+
+TEST_CASE("the turn rate state stays within max_turn_rate", "[legs]") {
+  // Legs spinning about their midpoint at 720°/s: readings a pivot cannot produce.
+  auto peak_rate = [](double max_rate) {
+    LegPoseParams p;
+    p.max_turn_rate = max_rate;
+    LegPoseEstimator est(p);
+    auto legs = [](double t) {
+      const double a = 4 * M_PI * t;
+      const Eigen::Vector2d half = 0.09 * Eigen::Vector2d(-std::sin(a), std::cos(a));
+      return std::make_pair(Eigen::Vector2d(half), Eigen::Vector2d(-half));
+    };
+    est.start(0, legs(0).first, legs(0).second, 0);
+    double peak = 0;
+    for (int k = 1; k <= 20; ++k) {
+      est.predict(0.1 * k);
+      est.update({true, legs(0.1 * k).first}, {true, legs(0.1 * k).second}, {5, 5});
+      peak = std::max(peak, std::abs(est.state().x(5)));
+    }
+    return peak;
+  };
+  const double bound = LegPoseParams{}.max_turn_rate;
+  CHECK(peak_rate(bound) <= bound + 1e-9);
+  CHECK(peak_rate(0) > bound);  // P3's unbounded model winds up
+}

@@ -37,6 +37,8 @@ void LegPoseEstimator::start(double t, const Eigen::Vector2d& a, const Eigen::Ve
   prev_yaw_ = yaw;
   measured_yaw_ = yaw;
   have_measured_yaw_ = true;
+  // The starting facing is the caller's knowledge (leg_pose: P3's frontal following).
+  facing_walked_ = p_.backward_walk_max;
   body_d_ = rotate(-yaw, left_ - right_);
   started_ = true;
   pred_left_ = left_;
@@ -57,8 +59,10 @@ void LegPoseEstimator::predict(double t) {
   }
   if (dt > 0) kalmanPredict(g_, model_, dt);
   g_.x(2) = wrapAngle(g_.x(2));
+  clampTurnRate();
   hidden_left_ += dt;
   hidden_right_ += dt;
+  dt_ = dt;
   t_ = t;
   // Usual motion: the gait model gives the sagittal spread, the step width the frontal one.
   // Unusual motion: legs symmetric about the sagittal plane, as far apart as last seen.
@@ -117,6 +121,7 @@ Eigen::Vector2d LegPoseEstimator::hiddenLeg(const Eigen::Vector2d& sensor,
 void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
                               const Eigen::Vector2d& sensor) {
   legs_swapped_ = false;
+  turned_round_ = false;
   if (!left.seen && !right.seen) return;  // coast on the prediction
   bool inferred = false;
   if (left.seen) {
@@ -163,8 +168,17 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
     m.angle_rows = {2};
     zone_ = z.zone;
   }
+  // Innovation against the prediction (g_.x(2) is still the predicted heading here).
+  const double innovation = z.observable ? wrapAngle(meas(2) - g_.x(2)) : 0.0;
+  const double gate = p_.orientation_gate;
+  if (z.observable && gate > 0) {
+    const double s2 = g_.P(2, 2) + m.R(2, 2), nu2 = innovation * innovation;
+    if (nu2 > gate * gate * s2) m.R(2, 2) = nu2 / (gate * gate) - g_.P(2, 2);
+  }
   kalmanUpdate(g_, m, meas);
   g_.x(2) = wrapAngle(g_.x(2));
+  clampTurnRate();
+  checkFacing(innovation);
   body_d_ = rotate(-g_.x(2), left_ - right_);
   if (!inferred && z.observable) {
     learnStepWidth(body_d_.norm());
@@ -196,6 +210,30 @@ void LegPoseEstimator::recordGait(double t) {
   const gait::Params fit = p_.gait_solver ? p_.gait_solver(samples_, p_.gait, gait_)
                                           : gait::fitVarPro(samples_, p_.gait);
   if (fit.valid) gait_ = fit;
+}
+
+void LegPoseEstimator::clampTurnRate() {
+  if (p_.max_turn_rate > 0) g_.x(5) = std::clamp(g_.x(5), -p_.max_turn_rate, p_.max_turn_rate);
+}
+
+void LegPoseEstimator::checkFacing(double innovation) {
+  if (p_.backward_walk_max <= 0) return;
+  // The chance that this reading was the mirror image: nil up to 45°, 1/2 from 90° (the two
+  // perpendiculars of the leg vector are then equally near the prediction). The certainty of
+  // the facing, carried as the evidence, shrinks by 1 − 2·slip.
+  const double slip = 0.5 * std::clamp((std::abs(innovation) - M_PI / 4) / (M_PI / 4), 0.0, 1.0);
+  facing_walked_ *= 1 - 2 * slip;
+  const Eigen::Vector2d v = velocity();
+  if (v.norm() >= p_.mirror_min_speed && dt_ > 0) {
+    const double along = v.x() * std::cos(yaw()) + v.y() * std::sin(yaw());
+    facing_walked_ = std::min(p_.backward_walk_max, facing_walked_ + along * dt_);
+  }
+  if (facing_walked_ < -p_.mirror_margin) {
+    turnAround();
+    facing_walked_ = -facing_walked_;
+    turned_round_ = true;
+    legs_swapped_ = true;
+  }
 }
 
 void LegPoseEstimator::turnAround() {

@@ -6,8 +6,7 @@
 
 namespace pedtrack::track {
 
-std::vector<ParamSpec> legPoseParamSpecs() {
-  const LegPoseParams d;
+std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
   const double deg = 180 / M_PI;
   return {
       ParamSpec::vector("accel_var", std::vector<double>{d.var_ax, d.var_ay, d.var_atheta}, "", 3,
@@ -34,6 +33,21 @@ std::vector<ParamSpec> legPoseParamSpecs() {
       ParamSpec::real("coast_tau", d.coast_tau, "s", 0, 3600,
                       "with neither leg seen the velocity decays with this time constant "
                       "(people stop and turn when out of sight; 0: velocity held)"),
+      ParamSpec::real("max_turn_rate", d.max_turn_rate * deg, "deg/s", 0, 1e5,
+                      "the turn rate state is held within +/- this (a quick pivot: 180 deg in "
+                      "0.6 s; 0: unbounded, P3's model)"),
+      ParamSpec::real("orientation_gate", d.orientation_gate, "sigma", 0, 1000,
+                      "an orientation reading farther than this many std. devs. from the "
+                      "prediction is down-weighted to this distance (robust update; 0: off)"),
+      ParamSpec::real("backward_walk_max", d.backward_walk_max, "m", 0, 1000,
+                      "facing check: a person who walks backward further than this (less after "
+                      "a doubtful orientation reading) is turned round to face the way they walk; "
+                      "0: off"),
+      ParamSpec::real("mirror_margin", d.mirror_margin, "m", 0, 1000,
+                      "facing check: backward walking beyond this after a doubtful reading "
+                      "turns the estimate round"),
+      ParamSpec::real("mirror_min_speed", d.mirror_min_speed, "m/s", 0, 100,
+                      "facing check: slower motion is no evidence of the facing"),
       ParamSpec::choice("gait_solver", "varpro", {"varpro", "ipopt"},
                         "eq. 3's solver: varpro (global in f, microseconds) or ipopt (local, "
                         "from the previous fit; P3 used a local method, COBYLA)"),
@@ -71,6 +85,11 @@ LegPoseParams readLegPoseParams(const ParamSet& s) {
   p.leg_gate = s.getDouble("leg_gate");
   p.gait_frames = int(s.getInt("gait_frames"));
   p.coast_tau = s.getDouble("coast_tau");
+  p.max_turn_rate = s.getDouble("max_turn_rate") * rad;
+  p.orientation_gate = s.getDouble("orientation_gate");
+  p.backward_walk_max = s.getDouble("backward_walk_max");
+  p.mirror_margin = s.getDouble("mirror_margin");
+  p.mirror_min_speed = s.getDouble("mirror_min_speed");
   const std::vector<double> b = s.getVector("gait_bounds");
   p.gait = {b[0], b[1], b[2], b[3], b[4], b[5]};
   if (!(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5] && b[2] > 0))

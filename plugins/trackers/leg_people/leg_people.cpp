@@ -333,7 +333,7 @@ PluginDescriptor describe() {
       ParamSpec::vector("follow_zone", std::vector<double>{0.3, 3.0, 1.0}, "m", 3, -100, 100,
                         "x_min x_max half_width of the zone in front of the robot (robot frame)"),
   };
-  const auto pose = legPoseParamSpecs();
+  const auto pose = legPoseParamSpecs(def.pose);
   d.params.insert(d.params.end(), pose.begin(), pose.end());
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<LegPeople>(ctx);

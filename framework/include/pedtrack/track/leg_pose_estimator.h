@@ -34,6 +34,27 @@ struct LegPoseParams {
   /// second, so a lost person is looked for near where they vanished rather than where a
   /// constant velocity would have carried them.
   double coast_tau = 0.5;
+  /// rad/s, the turn rate state is held within ±this (ours; 0: unbounded). P3's constant-
+  /// acceleration model lets one wrong turn-in-place reading wind the rate up to thousands of
+  /// degrees a second, after which every prediction lands on another wrong reading; a quick
+  /// pivot is about 180° in 0.6 s.
+  double max_turn_rate = 300 * M_PI / 180;
+  /// The orientation measurement's normalised innovation is held within this many standard
+  /// deviations by inflating its variance (a robust Kalman update; ours; 0: off): a reading far
+  /// from the prediction is more often a leg taken for the other than a turn.
+  double orientation_gate = 3;
+  /// m, the facing check (ours; 0: off). The legs cannot tell a person walking forward from
+  /// one walking backward with the estimate turned round (left and right swapped with it): the
+  /// two explain every scan alike, and a fast turn can leave the estimate on the wrong one for
+  /// good. People walk forward far more than backward, so the distance walked along the
+  /// estimated facing minus the distance walked against it is summed, starting at (and capped
+  /// at) this; an orientation innovation over 45° shrinks it (by half at 67.5°, to nothing from
+  /// 90°: the reading may have been the mirror image); once it falls below −mirror_margin the
+  /// estimate is turned round. A person who walks backward further than this after a clean
+  /// track is then read as facing the way they walk.
+  double backward_walk_max = 2.5;
+  double mirror_margin = 0.3;     ///< m, see backward_walk_max
+  double mirror_min_speed = 0.3;  ///< m/s, slower motion is no evidence of facing
   /// Eq. 3's solver: null = gait::fitVarPro; leg_pose can plug in gait::fitIpopt (a separate
   /// library, so the framework does not depend on Ipopt).
   gait::Params (*gait_solver)(const std::vector<gait::Sample>&, const gait::Bounds&,
@@ -85,6 +106,11 @@ class LegPoseEstimator {
   /// The last update() found the legs the other way round and swapped its left and right (a
   /// caller that keeps its own leg identities swaps them too).
   bool legsSwapped() const { return legs_swapped_; }
+  /// The last update() turned the estimate round by the facing check (backward_walk_max); its
+  /// left and right were swapped with it (legsSwapped() is true too).
+  bool turnedRound() const { return turned_round_; }
+  /// m, the facing check's evidence: walked along the facing minus against it, capped.
+  double facingWalked() const { return facing_walked_; }
   MotionZone zone() const { return zone_; }
   double stepWidth() const { return w0_; }
   bool stepWidthLearned() const { return w0_learned_; }
@@ -95,6 +121,8 @@ class LegPoseEstimator {
  private:
   void learnStepWidth(double distance);
   void recordGait(double t);
+  void clampTurnRate();
+  void checkFacing(double innovation);
 
   LegPoseParams p_;
   PoseConstantAcceleration model_;
@@ -105,6 +133,9 @@ class LegPoseEstimator {
   bool have_measured_yaw_ = false;
   double hidden_left_ = 0, hidden_right_ = 0;  // T_o per leg, s
   bool legs_swapped_ = false;
+  bool turned_round_ = false;
+  double dt_ = 0;             // the last prediction's step, s
+  double facing_walked_ = 0;  // m, backward_walk_max's evidence
   double w0_ = 0;
   std::vector<double> w0_samples_;  // leg distances while W₀ is learned
   bool w0_learned_ = false;

@@ -8,8 +8,8 @@
 
 namespace pedtrack::track {
 
-/// Declarations with P3's values as defaults (P3 §2.3–2.5).
-std::vector<ParamSpec> legPoseParamSpecs();
+/// Declarations with `defaults`' values (P3's, P3 §2.3–2.5, unless a plugin changes some).
+std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& defaults = LegPoseParams{});
 
 /// The estimator's parameters from a validated section (gait_solver left null: the caller
 /// plugs in Ipopt when the `gait_solver` key asks for it).
