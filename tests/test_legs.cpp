@@ -33,6 +33,16 @@ double angleDiff(double a, double b) {
   return std::abs(std::remainder(a - b, 2 * M_PI));
 }
 
+// A person facing `facing` walks forward along it at `speed` from the origin, legs scissoring
+// (0.9 Hz, L0 0.3 m) W = 0.18 m apart; returns (left, right) at t.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> walkerLegs(double t, double facing, double speed) {
+  const Eigen::Vector2d fwd(std::cos(facing), std::sin(facing)), left(-fwd.y(), fwd.x());
+  const Eigen::Vector2d c = speed * t * fwd;
+  const double lp = 0.3 * std::sin(2 * M_PI * 0.9 * t);
+  const Eigen::Vector2d half = 0.5 * (lp * fwd + 0.18 * left);
+  return {Eigen::Vector2d(c + half), Eigen::Vector2d(c - half)};
+}
+
 }  // namespace
 
 TEST_CASE("the gait fit recovers known L0, f, phi and b", "[legs]") {
@@ -131,13 +141,8 @@ TEST_CASE("the leg pose estimator tracks a straight walk and its heading", "[leg
   // A person walking along +y at 1 m/s, stride frequency 0.9 Hz, legs W = 0.18 m apart.
   LegPoseParams p;
   LegPoseEstimator est(p);
-  const double yaw = M_PI / 2, w = 0.18, f = 0.9, l0 = 0.3;
-  auto legs = [&](double t) {
-    const Eigen::Vector2d c(0, t), fwd(0, 1), left(-1, 0);
-    const double lp = l0 * std::sin(2 * M_PI * f * t);
-    const Eigen::Vector2d half = 0.5 * (lp * fwd + w * left);  // evaluated: no dangling expression
-    return std::make_pair(Eigen::Vector2d(c + half), Eigen::Vector2d(c - half));
-  };
+  const double yaw = M_PI / 2, w = 0.18;
+  auto legs = [&](double t) { return walkerLegs(t, yaw, 1.0); };
   const Eigen::Vector2d sensor(3, 0);
   est.start(0, legs(0).first, legs(0).second, yaw);
   double worst_yaw = 0, worst_pos = 0, sum_yaw = 0;
@@ -426,16 +431,6 @@ TEST_CASE("resolve_swaps reads legs the wrong way round as swapped labels, not a
 }
 
 namespace {
-
-// A person facing `facing` walks forward along it at `speed` from the origin, legs scissoring
-// (0.9 Hz, L0 0.3 m) W = 0.18 m apart; returns (left, right) at t.
-std::pair<Eigen::Vector2d, Eigen::Vector2d> walkerLegs(double t, double facing, double speed) {
-  const Eigen::Vector2d fwd(std::cos(facing), std::sin(facing)), left(-fwd.y(), fwd.x());
-  const Eigen::Vector2d c = speed * t * fwd;
-  const double lp = 0.3 * std::sin(2 * M_PI * 0.9 * t);
-  const Eigen::Vector2d half = 0.5 * (lp * fwd + 0.18 * left);
-  return {Eigen::Vector2d(c + half), Eigen::Vector2d(c - half)};
-}
 
 // Feeds the walker's legs (unlabelled) to `est` from t0 to t1 at 10 Hz; the times at which the
 // facing check turned the estimate round.
