@@ -50,11 +50,12 @@ TEST_CASE("people_2d_legs.ini tracks the 10-person leg-height crowd", "[legs][pi
   const auto r = runHost({"run", kConfigs + "people_2d_legs.ini", "--out", dir, "-q"});
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  // Measured: MOTA 0.730, MOTP 0.069 m, 41 ID switches (README "Leg-height tracking").
+  // Measured: MOTA 0.831, MOTP 0.062 m, 12 ID switches (README "Leg-height tracking"; 0.788
+  // and 30 before confirmed people got a walker's noise).
   const std::string e = evalRunJson(dir);
-  CHECK(jsonNumber(e, "mota") >= 0.68);
-  CHECK(jsonNumber(e, "motp_m") <= 0.08);
-  CHECK(jsonNumber(e, "id_switches") <= 60);
+  CHECK(jsonNumber(e, "mota") >= 0.78);
+  CHECK(jsonNumber(e, "motp_m") <= 0.075);
+  CHECK(jsonNumber(e, "id_switches") <= 25);
 }
 
 #ifdef PEDTRACK_WITH_ROSBAG
@@ -72,10 +73,12 @@ TEST_CASE("on a bag without odometry scan matching runs by itself", "[legs][pipe
   // 1265 scans: every one after the first is matched, none rejected (the scanner stands still).
   CHECK(jsonValue(run, "scan_matches") >= 1200);
   CHECK(jsonValue(run, "scan_matches_rejected") <= 10);
-  // Measured 44 tracks over the bag's 126 s, people walking through the room.
+  // Measured 10 tracks over the bag's 126 s (mean 34 s), a few people walking round the room
+  // (27 before confirmed people got a walker's noise and re-identification looked where they
+  // were last seen as well). Fewer than 5 would be people missed; many more, tracks broken.
   const auto ids = trackIds(dir + "/tracks.csv");
-  CHECK(ids.size() >= 20);
-  CHECK(ids.size() <= 80);
+  CHECK(ids.size() >= 5);
+  CHECK(ids.size() <= 40);
 }
 
 TEST_CASE("negative_2_merged.ini confirms few people where there are none", "[legs][pipeline]") {

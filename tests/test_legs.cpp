@@ -379,6 +379,34 @@ TEST_CASE("a confirmed walker lost behind others keeps their id when their legs 
   CHECK(after_off == 0);
 }
 
+TEST_CASE("a confirmed walker still holding coasting legs takes back a new pair formed nearby",
+          "[legs]") {
+  // Walks along +x for 2 s (confirmed), is hidden for 0.3 s, and reappears slowed down and
+  // 0.7 m to the side of their path: beyond every leg gate (the nearer new leg is 0.52 m from
+  // the predicted one, the gate 0.45 m), so their old leg objects coast on unassociated (they
+  // live object_max_coast = 0.5 s) while the new legs pair up. The confirmed person must take
+  // the new pair (within leg_gate + 1 m/s * 0.4 s = 0.8 m of where they were predicted or last
+  // seen), not leave it to start a second, unconfirmed person beside their coasting track.
+  LegPeopleTracker tr{LegPeopleParams{}};
+  const Eigen::Vector2d sensor(0, -5);
+  long before = 0;
+  for (int k = 0; k <= 20; ++k) {
+    const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+    tr.step(t, {{{x + lp / 2, 0.09}, 0.9, sensor, -1}, {{x - lp / 2, -0.09}, 0.9, sensor, -1}}, {});
+  }
+  for (const PersonState& s : tr.people())
+    if (s.confirmed) before = s.id;
+  REQUIRE(before > 0);
+  for (double t : {2.1, 2.2, 2.3}) tr.step(t, {}, {});
+  tr.step(2.4, {{{0.3, 0.79}, 0.9, sensor, -1}, {{0.3, 0.61}, 0.9, sensor, -1}}, {});
+  std::vector<long> seen;
+  for (const PersonState& s : tr.people())
+    if (s.seen) seen.push_back(s.id);
+  CHECK(seen == std::vector<long>{before});
+  for (const PersonState& s : tr.people())
+    if (s.id == before) CHECK(s.p.y() == Approx(0.7).margin(0.02));
+}
+
 TEST_CASE("a walker seen twice by scanners merged out of step is one person (merge_distance)",
           "[legs]") {
   // Each leg is detected twice, 0.15 m apart along the walk (the second scanner's scan taken

@@ -28,6 +28,7 @@ struct LegPeopleTracker::Person {
   LegPoseEstimator est;
   long left = -1, right = -1;  // object ids of the legs, -1 none
   Eigen::Vector2d origin;
+  Eigen::Vector2d seen_at = Eigen::Vector2d::Zero();  // position when a leg was last seen
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
   double stride_min = INFINITY, stride_max = -INFINITY;
@@ -192,6 +193,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // Travel counts only where a leg was seen: a coasting filter that extrapolates a jump (a leg
     // re-associated to clutter) would otherwise confirm a ghost without any measurement.
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
+    if (P.seen) P.seen_at = c;
     // Gait evidence: the legs' separation along the direction of motion swings as they scissor.
     const Eigen::Vector2d v = P.est.velocity();
     if (!P.confirmed && l.seen && r.seen && v.norm() > kStrideMinSpeed) {
@@ -205,8 +207,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     if (!P.confirmed && P.seen && strode && P.travelled >= p_.confirm_travel &&
         v.norm() <= p_.max_confirm_speed &&
         (P.score_sum / std::max(1, P.score_n) >= p_.leg_score ||
-         P.travelled >= p_.moving_confirm_travel))
+         P.travelled >= p_.moving_confirm_travel)) {
       P.confirmed = true;
+      // From now on the walker's own (smoother) noise: see legPeoplePoseDefaults().
+      P.est.setPositionNoise(p_.pose.var_ax, p_.pose.var_ay, p_.pose.sigma_xy);
+    }
     // Walking backwards fast for long is a facing chosen wrong at the start.
     const Eigen::Vector2d fwd(std::cos(P.est.yaw()), std::sin(P.est.yaw()));
     P.backwards = v.norm() > p_.flip_speed && v.dot(fwd) < 0 ? P.backwards + dt_person : 0;
@@ -262,17 +267,23 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
                 people_.end());
 }
 
-// The confirmed person lost from sight (neither leg tracked) predicted nearest to p, within
-// leg_gate plus reidentify_speed times their time unseen (at most reidentify_max); null if none.
+// The confirmed person not seen this scan nearest to p, within leg_gate plus reidentify_speed
+// times their time unseen (at most reidentify_max) of where they were predicted or where they
+// were last seen; null if none. They may still hold coasting leg objects: a person whose
+// prediction ran off (a turn misread from a hidden leg sends it the wrong way at walking speed)
+// loses their legs to a new pair formed where they really are, and the track must follow it
+// rather than coast out beside it while the pair starts a second person. Where they were last
+// seen bounds how far such a wrong prediction can carry the search.
 LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen::Vector2d& p) {
   if (p_.reidentify_speed <= 0) return nullptr;
   Person* best = nullptr;
   double best_d = INFINITY;
   for (auto& q : people_) {
-    if (!q->confirmed || q->seen || q->left >= 0 || q->right >= 0) continue;
+    if (!q->confirmed || q->seen) continue;
     const double radius =
         p_.pose.leg_gate + std::min(p_.reidentify_speed * (t - q->last_seen), p_.reidentify_max);
-    const double d = (Eigen::Vector2d(q->est.x(), q->est.y()) - p).norm();
+    const double d =
+        std::min((Eigen::Vector2d(q->est.x(), q->est.y()) - p).norm(), (q->seen_at - p).norm());
     if (d < radius && d < best_d) best = q.get(), best_d = d;
   }
   return best;
@@ -314,10 +325,18 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
     // new legs (facing as they walk, else as last known), W0 and gait are learned afresh.
     Person* person = v.norm() <= p_.max_confirm_speed ? lostPersonNear(t, mid) : nullptr;
     if (person) {
+      for (auto& o : objects_)
+        if (o->person == person->id) o->person = -1;
       if (v.norm() < p_.init_speed) yaw = person->est.yaw();
       person->est = LegPoseEstimator(p_.pose);
     } else {
-      people_.push_back(std::make_unique<Person>(p_.pose));
+      // A tentative person's filter follows its legs closely (P3's noise), so that a leg
+      // jumping to a neighbouring object shows as a speed no walker has (max_confirm_speed) and
+      // clutter shuffled by scan-matching error does not pass for a smooth walk.
+      LegPoseParams tentative = p_.pose;
+      tentative.var_ax = tentative.var_ay = p_.tentative_accel_var;
+      tentative.sigma_xy = p_.tentative_sigma_xy;
+      people_.push_back(std::make_unique<Person>(tentative));
       person = people_.back().get();
       person->id = ++next_person_;
       person->origin = mid;

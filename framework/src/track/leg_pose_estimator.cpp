@@ -236,6 +236,13 @@ void LegPoseEstimator::checkFacing(double innovation) {
   }
 }
 
+void LegPoseEstimator::setPositionNoise(double var_ax, double var_ay, double sigma_xy) {
+  p_.var_ax = var_ax;
+  p_.var_ay = var_ay;
+  p_.sigma_xy = sigma_xy;
+  model_ = PoseConstantAcceleration(var_ax, var_ay, p_.var_atheta);
+}
+
 void LegPoseEstimator::turnAround() {
   g_.x(2) = wrapAngle(g_.x(2) + M_PI);
   g_.x(5) = 0;  // the turn rate belonged to the wrong facing

@@ -47,6 +47,8 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.flip_speed = s.getDouble("flip_speed");
   p.flip_time = s.getDouble("flip_time");
   p.init_speed = s.getDouble("init_speed");
+  p.tentative_accel_var = s.getDouble("tentative_accel_var");
+  p.tentative_sigma_xy = s.getDouble("tentative_sigma_xy");
   return p;
 }
 
@@ -299,6 +301,13 @@ PluginDescriptor describe() {
       ParamSpec::real("flip_time", def.flip_time, "s", 0, 3600, "see flip_speed"),
       ParamSpec::real("init_speed", def.init_speed, "m/s", 0, 100,
                       "a new person faces their legs' motion above this speed, else the scanner"),
+      ParamSpec::real("tentative_accel_var", def.tentative_accel_var, "(m/s2)2", 1e-9, 1e9,
+                      "variance of a tentative person's X and Y acceleration noise (P3: 100); "
+                      "accel_var applies once confirmed. Close to the legs, the filter shows a leg "
+                      "jumping to a neighbouring object as a speed no walker has"),
+      ParamSpec::real("tentative_sigma_xy", def.tentative_sigma_xy, "m", 1e-6, 10,
+                      "std. dev. of a tentative person's legs' midpoint measurement (P3: 0.03); "
+                      "sigma_xy applies once confirmed"),
       ParamSpec::choice("scan_odometry", "auto", {"auto", "on", "off"},
                         "the robot's motion from matching each frame's scans (MRPT ICP against "
                         "keyframes), tracked in that frame so walls stand still on a robot "

@@ -101,6 +101,9 @@ class LegPoseEstimator {
   double y() const { return g_.x(1); }
   double yaw() const { return g_.x(2); }
   Eigen::Vector2d velocity() const { return g_.x.segment<2>(3); }
+  /// Replaces the position process and measurement noise (var_ax, var_ay, sigma_xy) from the
+  /// next prediction on; the state and its covariance are kept.
+  void setPositionNoise(double var_ax, double var_ay, double sigma_xy);
   /// Turns the estimate round by π (front and back swapped; left and right with them).
   void turnAround();
   /// The last update() found the legs the other way round and swapped its left and right (a
