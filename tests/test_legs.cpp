@@ -213,9 +213,9 @@ TEST_CASE("two people walking past each other keep their tracks", "[legs]") {
 
 TEST_CASE("legs the classifier scores low are confirmed only after moving_confirm_travel",
           "[legs]") {
-  LegPeopleParams p;  // leg_score 0.25, moving_leg_score 0.05, moving_confirm_travel 1 m
+  LegPeopleParams p;  // leg_score 0.25, moving_leg_score 0.05, moving_confirm_travel 0.7 m
   LegPeopleTracker tr(p);
-  double first_confirmed_x = NAN;
+  double first_confirmed_x = NAN, started_x = NAN;
   for (int k = 0; k < 50; ++k) {
     const double t = 0.1 * k, x = -2 + 1.0 * t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
     std::vector<LegDetection> legs{{{x + lp / 2, 0.09}, 0.1, {0, 0}, -1},
@@ -226,13 +226,16 @@ TEST_CASE("legs the classifier scores low are confirmed only after moving_confir
     tr.step(t, legs, {});
     for (const PersonState& s : tr.people()) {
       if (s.p.y() > 1) CHECK_FALSE(s.confirmed);
+      if (s.p.y() < 1 && std::isnan(started_x)) started_x = s.p.x();
       if (s.confirmed && std::isnan(first_confirmed_x)) first_confirmed_x = s.p.x();
     }
   }
   REQUIRE_FALSE(std::isnan(first_confirmed_x));
   // Started once the legs' filters had picked up the walking speed (a few scans in), confirmed
-  // one metre (not confirm_travel's 0.5 m) later.
-  CHECK(first_confirmed_x > -2 + 1.0);
+  // 0.7 m (not confirm_travel's 0.5 m) later, at the first scan past it (0.1 m a scan).
+  REQUIRE_FALSE(std::isnan(started_x));
+  CHECK(first_confirmed_x - started_x >= 0.7);
+  CHECK(first_confirmed_x - started_x < 0.85);
 }
 
 TEST_CASE("a pair that slides along without scissoring is not confirmed (confirm_stride)",

@@ -28,7 +28,8 @@ struct LegPeopleTracker::Person {
   LegPoseEstimator est;
   long left = -1, right = -1;  // object ids of the legs, -1 none
   Eigen::Vector2d origin;
-  Eigen::Vector2d seen_at = Eigen::Vector2d::Zero();  // position when a leg was last seen
+  // Position and velocity when a leg was last seen.
+  Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
   double stride_min = INFINITY, stride_max = -INFINITY;
@@ -193,7 +194,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // Travel counts only where a leg was seen: a coasting filter that extrapolates a jump (a leg
     // re-associated to clutter) would otherwise confirm a ghost without any measurement.
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
-    if (P.seen) P.seen_at = c;
+    if (P.seen) P.seen_at = c, P.seen_v = P.est.velocity();
     // Gait evidence: the legs' separation along the direction of motion swings as they scissor.
     const Eigen::Vector2d v = P.est.velocity();
     if (!P.confirmed && l.seen && r.seen && v.norm() > kStrideMinSpeed) {
@@ -268,8 +269,10 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
 }
 
 // The confirmed person not seen this scan nearest to p, within leg_gate plus reidentify_speed
-// times their time unseen (at most reidentify_max) of where they were predicted or where they
-// were last seen; null if none. They may still hold coasting leg objects: a person whose
+// times their time unseen (at most reidentify_max) of where they were predicted (the velocity
+// decaying with coast_tau), where they were last seen (they stopped), or where their last
+// velocity would have carried them (they walked on behind the people hiding them); null if
+// none. They may still hold coasting leg objects: a person whose
 // prediction ran off (a turn misread from a hidden leg sends it the wrong way at walking speed)
 // loses their legs to a new pair formed where they really are, and the track must follow it
 // rather than coast out beside it while the pair starts a second person. Where they were last
@@ -282,8 +285,10 @@ LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen
     if (!q->confirmed || q->seen) continue;
     const double radius =
         p_.pose.leg_gate + std::min(p_.reidentify_speed * (t - q->last_seen), p_.reidentify_max);
+    const double unseen = t - q->last_seen;
     const double d =
-        std::min((Eigen::Vector2d(q->est.x(), q->est.y()) - p).norm(), (q->seen_at - p).norm());
+        std::min({(Eigen::Vector2d(q->est.x(), q->est.y()) - p).norm(), (q->seen_at - p).norm(),
+                  (q->seen_at + unseen * q->seen_v - p).norm()});
     if (d < radius && d < best_d) best = q.get(), best_d = d;
   }
   return best;
