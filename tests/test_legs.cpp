@@ -557,3 +557,44 @@ TEST_CASE("the turn rate state stays within max_turn_rate", "[legs]") {
   CHECK(peak_rate(bound) <= bound + 1e-9);
   CHECK(peak_rate(0) > bound);  // P3's unbounded model winds up
 }
+
+TEST_CASE("the motion heading pulls the heading towards the walk, not past 90 deg", "[legs]") {
+  // Legs of a person facing `facing` (scissoring along it, 0.18 m apart) whose body moves along
+  // +x at 1 m/s: facing 40 deg is a diagonal crab walk, facing 180 deg a backward walk. The
+  // estimate starts on the true facing, with leg_people's walker noise.
+  auto run = [](double facing, double motion_heading_sigma) {
+    LegPoseParams p = legPeoplePoseDefaults();
+    p.motion_heading_sigma = motion_heading_sigma;
+    LegPoseEstimator est(p);
+    const Eigen::Vector2d fwd(std::cos(facing), std::sin(facing)), left(-fwd.y(), fwd.x());
+    auto legs = [&](double t) {
+      const Eigen::Vector2d c(t, 0);
+      const Eigen::Vector2d half = 0.5 * (0.3 * std::sin(2 * M_PI * 0.9 * t) * fwd + 0.18 * left);
+      return std::make_pair(Eigen::Vector2d(c + half), Eigen::Vector2d(c - half));
+    };
+    est.start(0, legs(0).first, legs(0).second, facing);
+    for (double t = 0.1; t <= 3 + 1e-9; t += 0.1) {
+      est.predict(t);
+      const auto [l, r] = legs(t);
+      const std::vector<Eigen::Vector2d> cand{l, r};
+      const auto [li, ri] = est.associate(cand);
+      LegSeen sl, sr;
+      if (li >= 0) sl = {true, cand[std::size_t(li)]};
+      if (ri >= 0) sr = {true, cand[std::size_t(ri)]};
+      est.update(sl, sr, {0, -5});
+    }
+    return std::remainder(est.yaw(), 2 * M_PI) * 180 / M_PI;
+  };
+  const double sigma = 15 * M_PI / 180;
+  // The legs say 40 deg, the motion 0 deg: fused in between (the cost of the prior for a
+  // person who really walks sideways), where the legs alone keep 40 deg.
+  const double crab_with = run(40 * M_PI / 180, sigma), crab_without = run(40 * M_PI / 180, 0);
+  INFO("crab walk: " << crab_with << " deg with, " << crab_without << " deg without");
+  CHECK(crab_without == Approx(40).margin(5));
+  CHECK(crab_with < crab_without - 10);
+  CHECK(crab_with > 0);
+  // Walking backward (motion 180 deg from the heading): not a reading; the facing rules decide.
+  const double back_with = run(M_PI, sigma), back_without = run(M_PI, 0);
+  INFO("backward walk: " << back_with << " deg with, " << back_without << " deg without");
+  CHECK(std::abs(back_with - back_without) < 1e-9);
+}

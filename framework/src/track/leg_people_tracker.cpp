@@ -211,7 +211,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
          P.travelled >= p_.moving_confirm_travel)) {
       P.confirmed = true;
       // From now on the walker's own (smoother) noise: see legPeoplePoseDefaults().
-      P.est.setPositionNoise(p_.pose.var_ax, p_.pose.var_ay, p_.pose.sigma_xy);
+      P.est.retune(p_.pose);
     }
     // Walking backwards fast for long is a facing chosen wrong at the start.
     const Eigen::Vector2d fwd(std::cos(P.est.yaw()), std::sin(P.est.yaw()));
@@ -341,6 +341,7 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
       LegPoseParams tentative = p_.pose;
       tentative.var_ax = tentative.var_ay = p_.tentative_accel_var;
       tentative.sigma_xy = p_.tentative_sigma_xy;
+      tentative.motion_heading_sigma = 0;  // its motion is still to be proven a walk
       people_.push_back(std::make_unique<Person>(tentative));
       person = people_.back().get();
       person->id = ++next_person_;

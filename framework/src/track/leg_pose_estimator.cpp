@@ -177,6 +177,7 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
   }
   kalmanUpdate(g_, m, meas);
   g_.x(2) = wrapAngle(g_.x(2));
+  updateFromMotion();
   clampTurnRate();
   checkFacing(innovation);
   body_d_ = rotate(-g_.x(2), left_ - right_);
@@ -212,6 +213,21 @@ void LegPoseEstimator::recordGait(double t) {
   if (fit.valid) gait_ = fit;
 }
 
+void LegPoseEstimator::updateFromMotion() {
+  if (p_.motion_heading_sigma <= 0) return;
+  const Eigen::Vector2d v = velocity();
+  if (v.norm() < p_.motion_heading_speed) return;
+  const double heading = std::atan2(v.y(), v.x());
+  if (std::abs(wrapAngle(heading - g_.x(2))) > M_PI / 2) return;
+  LinearMeasurement m;
+  m.H = Eigen::MatrixXd::Zero(1, 9);
+  m.H(0, 2) = 1;
+  m.R = Eigen::MatrixXd::Constant(1, 1, p_.motion_heading_sigma * p_.motion_heading_sigma);
+  m.angle_rows = {0};
+  kalmanUpdate(g_, m, Eigen::VectorXd::Constant(1, heading));
+  g_.x(2) = wrapAngle(g_.x(2));
+}
+
 void LegPoseEstimator::clampTurnRate() {
   if (p_.max_turn_rate > 0) g_.x(5) = std::clamp(g_.x(5), -p_.max_turn_rate, p_.max_turn_rate);
 }
@@ -236,11 +252,9 @@ void LegPoseEstimator::checkFacing(double innovation) {
   }
 }
 
-void LegPoseEstimator::setPositionNoise(double var_ax, double var_ay, double sigma_xy) {
-  p_.var_ax = var_ax;
-  p_.var_ay = var_ay;
-  p_.sigma_xy = sigma_xy;
-  model_ = PoseConstantAcceleration(var_ax, var_ay, p_.var_atheta);
+void LegPoseEstimator::retune(const LegPoseParams& p) {
+  p_ = p;
+  model_ = PoseConstantAcceleration(p.var_ax, p.var_ay, p.var_atheta);
 }
 
 void LegPoseEstimator::turnAround() {

@@ -48,6 +48,12 @@ std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
                       "turns the estimate round"),
       ParamSpec::real("mirror_min_speed", d.mirror_min_speed, "m/s", 0, 100,
                       "facing check: slower motion is no evidence of the facing"),
+      ParamSpec::real("motion_heading_sigma", d.motion_heading_sigma * 180 / M_PI, "deg", 0, 180,
+                      "at motion_heading_speed or faster the velocity's direction is also an "
+                      "orientation reading with this std. dev. (people walk forward; a side step "
+                      "it misreads; 0: off, P3's model)"),
+      ParamSpec::real("motion_heading_speed", d.motion_heading_speed, "m/s", 0, 100,
+                      "see motion_heading_sigma"),
       ParamSpec::choice("gait_solver", "varpro", {"varpro", "ipopt"},
                         "eq. 3's solver: varpro (global in f, microseconds) or ipopt (local, "
                         "from the previous fit; P3 used a local method, COBYLA)"),
@@ -90,6 +96,8 @@ LegPoseParams readLegPoseParams(const ParamSet& s) {
   p.backward_walk_max = s.getDouble("backward_walk_max");
   p.mirror_margin = s.getDouble("mirror_margin");
   p.mirror_min_speed = s.getDouble("mirror_min_speed");
+  p.motion_heading_sigma = s.getDouble("motion_heading_sigma") * rad;
+  p.motion_heading_speed = s.getDouble("motion_heading_speed");
   const std::vector<double> b = s.getVector("gait_bounds");
   p.gait = {b[0], b[1], b[2], b[3], b[4], b[5]};
   if (!(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5] && b[2] > 0))

@@ -55,6 +55,13 @@ struct LegPoseParams {
   double backward_walk_max = 2.5;
   double mirror_margin = 0.3;     ///< m, see backward_walk_max
   double mirror_min_speed = 0.3;  ///< m/s, slower motion is no evidence of facing
+  /// rad, people walk forward: at motion_heading_speed or faster the direction of the estimated
+  /// velocity is a second orientation measurement with this standard deviation (ours; 0: off,
+  /// P3's model). In a crowd the zoning reads legs that are often hidden, inferred or someone
+  /// else's, and the motion tells the heading better; a side step (P3 scenario 2) it misreads.
+  /// Not applied when over 90° from the heading (walking backward: the facing rules decide).
+  double motion_heading_sigma = 0;
+  double motion_heading_speed = 0.5;  ///< m/s, see motion_heading_sigma
   /// Eq. 3's solver: null = gait::fitVarPro; leg_pose can plug in gait::fitIpopt (a separate
   /// library, so the framework does not depend on Ipopt).
   gait::Params (*gait_solver)(const std::vector<gait::Sample>&, const gait::Bounds&,
@@ -101,9 +108,9 @@ class LegPoseEstimator {
   double y() const { return g_.x(1); }
   double yaw() const { return g_.x(2); }
   Eigen::Vector2d velocity() const { return g_.x.segment<2>(3); }
-  /// Replaces the position process and measurement noise (var_ax, var_ay, sigma_xy) from the
-  /// next prediction on; the state and its covariance are kept.
-  void setPositionNoise(double var_ax, double var_ay, double sigma_xy);
+  /// Replaces the parameters from the next prediction on; the state, its covariance, the gait
+  /// fit and the step width are kept (leg_people: a person confirmed gets a walker's).
+  void retune(const LegPoseParams& p);
   /// Turns the estimate round by π (front and back swapped; left and right with them).
   void turnAround();
   /// The last update() found the legs the other way round and swapped its left and right (a
@@ -125,6 +132,7 @@ class LegPoseEstimator {
   void learnStepWidth(double distance);
   void recordGait(double t);
   void clampTurnRate();
+  void updateFromMotion();
   void checkFacing(double innovation);
 
   LegPoseParams p_;
