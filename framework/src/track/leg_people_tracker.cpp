@@ -272,11 +272,10 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
 // times their time unseen (at most reidentify_max) of where they were predicted (the velocity
 // decaying with coast_tau), where they were last seen (they stopped), or where their last
 // velocity would have carried them (they walked on behind the people hiding them); null if
-// none. They may still hold coasting leg objects: a person whose
-// prediction ran off (a turn misread from a hidden leg sends it the wrong way at walking speed)
-// loses their legs to a new pair formed where they really are, and the track must follow it
-// rather than coast out beside it while the pair starts a second person. Where they were last
-// seen bounds how far such a wrong prediction can carry the search.
+// none. They may still hold coasting leg objects: a person whose prediction ran off (a turn
+// misread from a hidden leg sends it the wrong way at walking speed) loses their legs to a new
+// pair formed where they really are, and the track must follow it rather than coast out beside
+// it while the pair starts a second person.
 LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen::Vector2d& p) {
   if (p_.reidentify_speed <= 0) return nullptr;
   Person* best = nullptr;
@@ -355,6 +354,8 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
     person->right = a_left ? b->id : a->id;
     a->person = b->person = person->id;
     person->last_seen = person->last_step = t;
+    person->seen_at = mid;
+    person->seen_v = v;
     person->backwards = 0;
     person->seen = true;
     person->cluster = legs[std::size_t(a->det)].cluster;
