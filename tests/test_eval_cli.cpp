@@ -2,6 +2,7 @@
 // against the labelled legs of a leg_tracker training bag.
 #include <mrpt/core/format.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -258,6 +259,38 @@ TEST_CASE("eval scores detections against the labelled legs of a leg_tracker bag
   CHECK(jsonValue(j, "precision") == 0);
   CHECK(jsonValue(j, "recall") == 0);
   CHECK(jsonValue(j, "fp") == 303);
+
+  // Tracks against the same labels: one track on each labelled leg (ids by the leg's place in
+  // its scan), and one on nothing, 30 m away, in every scan.
+  std::string tracks = "t,frame,track,x,y,sensor_x,sensor_y,status\n";
+  std::size_t most = 0;
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    char buf[200];
+    for (std::size_t i = 0; i < scans[k].legs.size(); ++i) {
+      const auto [x, y] = scans[k].legs[i];
+      std::snprintf(buf, sizeof buf, "%.6f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,confirmed\n", scans[k].t, k,
+                    i + 1, x, y, x, y);
+      tracks += buf;
+    }
+    most = std::max(most, scans[k].legs.size());
+    std::snprintf(buf, sizeof buf, "%.6f,%zu,999,30,30,30,30,confirmed\n", scans[k].t, k);
+    tracks += buf;
+  }
+  writeFile(dir + "/tracks.csv", tracks);
+  const auto r = runHost({"eval", "--truth", bag_path, "--tracks", dir + "/tracks.csv", "--json"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(jsonValue(r.output, "threshold_m") == Approx(0.35));
+  CHECK(jsonValue(r.output, "labelled_legs") == 303);
+  CHECK(jsonValue(r.output, "legs_covered") == 303);
+  CHECK(jsonValue(r.output, "track_rows") == 303 + 187);
+  CHECK(jsonValue(r.output, "rows_near_no_leg") == 187);
+  CHECK(jsonValue(r.output, "tracks") == double(most + 1));
+  CHECK(jsonValue(r.output, "tracks_on_no_person") == 1);
+  // The labels are in the laser frame.
+  const auto fixed =
+      runHost({"eval", "--truth", bag_path, "--tracks", dir + "/tracks.csv", "--frame", "fixed"});
+  CHECK(fixed.exit_code == 2);
 }
 #endif
 
