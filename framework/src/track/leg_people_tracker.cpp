@@ -335,8 +335,8 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
       person->est = LegPoseEstimator(p_.pose);
     } else {
       // A tentative person's filter follows its legs closely (P3's noise), so that a leg
-      // jumping to a neighbouring object shows as a speed no walker has (max_confirm_speed) and
-      // clutter shuffled by scan-matching error does not pass for a smooth walk.
+      // jumping to a neighbouring object shows as a speed no walker has (max_confirm_speed) and a
+      // pair whose association hops along furniture does not pass for a smooth walk.
       LegPoseParams tentative = p_.pose;
       tentative.var_ax = tentative.var_ay = p_.tentative_accel_var;
       tentative.sigma_xy = p_.tentative_sigma_xy;

@@ -103,9 +103,9 @@ struct LegPeopleParams {
   double init_speed = 0.3;      ///< m/s, a new person's facing is their legs' motion above this
   /// (m/s)², σ²_ax = σ²_ay of a tentative person's pose filter (P3's 10²); pose.var_ax/var_ay
   /// apply once confirmed. Tracking its legs this closely, the filter shows a leg jumping to a
-  /// neighbouring object as a speed no walker has, and furniture legs shuffled by scan-matching
-  /// error (negative_2.bag) do not pass for a smooth walk: with the confirmed people's noise
-  /// from the start, negative_2 gave 5 confirmed ghosts instead of 0.
+  /// neighbouring object as a speed no walker has, and a pair whose association hops along
+  /// furniture as the robot drives past (negative_2.bag) does not pass for a smooth walk: with
+  /// the confirmed people's noise from the start, negative_2 gave 5 confirmed ghosts instead of 0.
   double tentative_accel_var = 100;
   double tentative_sigma_xy = 0.03;  ///< m, σ_X = σ_Y of a tentative person (P3's)
 };
