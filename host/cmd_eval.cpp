@@ -3,7 +3,6 @@
 // simulator's truth.csv or, with ROS bag support, a bag's labelled leg positions.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <optional>
@@ -15,7 +14,6 @@
 #include "pedtrack/errors.h"
 #include "pedtrack/eval/detection_pr.h"
 #include "pedtrack/eval/evaluate.h"
-#include "pedtrack/eval/leg_coverage.h"
 #include "pedtrack/eval/segmentation.h"
 #include "pedtrack/text.h"
 #ifdef PEDTRACK_WITH_ROSBAG
@@ -187,28 +185,9 @@ int evalTracksOnBag(const EvalArgs& a) {
                                           kTimeTolerance);
   const eval::LegCoverage c =
       eval::legCoverage(eval::alignFrames(legs, tracks, kTimeTolerance), a.threshold);
-  const long lone = c.tracksOnNoPerson();
-  char buf[512];
-  if (a.json) {
-    std::snprintf(buf, sizeof buf,
-                  "{\"threshold_m\": %g, \"labelled_legs\": %ld, \"legs_covered\": %ld, "
-                  "\"leg_recall\": %.6g, \"track_rows\": %ld, \"rows_near_no_leg\": %ld, "
-                  "\"tracks\": %zu, \"tracks_on_no_person\": %ld}\n",
-                  a.threshold, c.legs, c.covered, c.recall(), c.rows, c.unsupported,
-                  c.per_track.size(), lone);
-  } else {
-    std::snprintf(buf, sizeof buf,
-                  "pedtrack eval: tracks against the labelled legs of %s; a leg is covered by a "
-                  "track within %.3f m (laser frame)\n\n"
-                  "  labelled legs       %ld\n"
-                  "  covered             %ld   (recall %.4f)\n"
-                  "  track rows          %ld\n"
-                  "  near no leg         %ld\n"
-                  "  tracks              %zu   (%ld with at most 10 %% of their rows near a leg)\n",
-                  a.truth[0].c_str(), a.threshold, c.legs, c.covered, c.recall(), c.rows,
-                  c.unsupported, c.per_track.size(), lone);
-  }
-  std::cout << buf;
+  EvalSetup setup;
+  setup.threshold = a.threshold;
+  std::cout << (a.json ? legCoverageJson(c, setup) : legCoverageText(c, setup, a.truth[0]));
   return exit_code::kOk;
 #else
   throw ConfigError("--truth " + a.truth[0] +
@@ -291,7 +270,8 @@ int evalCommand(const std::vector<std::string>& args) {
       "tracks", po::value(&a.tracks)->composing(), "tracks.csv to score (repeatable: runs)")(
       "detections", po::value(&a.detections), "detections.csv to score instead of tracks")(
       "threshold", po::value(&a.threshold),
-      "largest match distance, m (default 0.75 for tracks, 0.1 for detections)")(
+      "largest match distance, m (default 0.75 for tracks, 0.1 for detections, 0.35 for tracks "
+      "against a bag's legs)")(
       "following", po::value(&a.following),
       "score only this truth id and ignore false positives (person following)")(
       "min-visible", po::value(&a.min_visible)->default_value(1),

@@ -204,6 +204,34 @@ std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s,
   return top.str() + "\n";
 }
 
+std::string legCoverageText(const eval::LegCoverage& c, const EvalSetup& s,
+                            const std::string& bag) {
+  std::string o = format(
+      "pedtrack eval: tracks against the labelled legs of %s; a leg is covered by a track within "
+      "%.3f m (laser frame)\n\n",
+      bag.c_str(), s.threshold);
+  o += format("  labelled legs       %ld\n", c.legs);
+  o += format("  covered             %ld   (recall %s)\n", c.covered, fixed(c.recall()).c_str());
+  o += format("  track rows          %ld\n", c.rows);
+  o += format("  near no leg         %ld\n", c.unsupported);
+  o += format("  tracks              %zu   (%ld with at most 10 %% of their rows near a leg)\n",
+              c.per_track.size(), c.tracksOnNoPerson());
+  return o;
+}
+
+std::string legCoverageJson(const eval::LegCoverage& c, const EvalSetup& s) {
+  Json j;
+  j.num("threshold_m", s.threshold)
+      .count("labelled_legs", std::size_t(c.legs))
+      .count("legs_covered", std::size_t(c.covered))
+      .num("leg_recall", c.recall())
+      .count("track_rows", std::size_t(c.rows))
+      .count("rows_near_no_leg", std::size_t(c.unsupported))
+      .count("tracks", c.per_track.size())
+      .count("tracks_on_no_person", std::size_t(c.tracksOnNoPerson()));
+  return j.str() + "\n";
+}
+
 std::string detectionText(const eval::DetectionCounts& c, const EvalSetup& s) {
   std::string o = format("pedtrack eval: detections vs %s%s, %zu frames; %s\n\n",
                          s.truth_source == "bag" ? "labelled legs of a bag" : "truth",

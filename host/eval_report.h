@@ -7,6 +7,7 @@
 
 #include "pedtrack/eval/detection_pr.h"
 #include "pedtrack/eval/evaluate.h"
+#include "pedtrack/eval/leg_coverage.h"
 #include "pedtrack/eval/segmentation.h"
 
 namespace pedtrack::cli {
@@ -28,6 +29,9 @@ std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s,
                          const std::vector<std::pair<std::string, std::string>>& extra = {});
 std::string detectionText(const eval::DetectionCounts& c, const EvalSetup& s);
 std::string detectionJson(const eval::DetectionCounts& c, const EvalSetup& s);
+/// Tracks against a labelled bag's legs (`--truth BAG --tracks T`); `bag` names it.
+std::string legCoverageText(const eval::LegCoverage& c, const EvalSetup& s, const std::string& bag);
+std::string legCoverageJson(const eval::LegCoverage& c, const EvalSetup& s);
 std::string segmentationText(const eval::SegmentationReport& r, const eval::SegmentationOptions& o);
 std::string segmentationJson(const eval::SegmentationReport& r, const eval::SegmentationOptions& o);
 

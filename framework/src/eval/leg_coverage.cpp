@@ -1,5 +1,6 @@
 #include "pedtrack/eval/leg_coverage.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pedtrack::eval {
@@ -26,8 +27,8 @@ LegCoverage legCoverage(const std::vector<EvalFrame>& frames, double threshold) 
         }
     }
     for (const Object& e : f.estimates) {
-      bool supported = false;
-      for (const Object& leg : f.truths) supported = supported || near(leg, e);
+      const bool supported = std::any_of(f.truths.begin(), f.truths.end(),
+                                         [&](const Object& leg) { return near(leg, e); });
       ++c.rows;
       c.unsupported += !supported;
       auto& [rows, near_rows] = c.per_track[e.id];
