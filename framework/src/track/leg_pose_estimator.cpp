@@ -18,7 +18,23 @@ Eigen::Vector2d rotate(double yaw, const Eigen::Vector2d& v) {
 }  // namespace
 
 LegPoseEstimator::LegPoseEstimator(const LegPoseParams& p)
-    : p_(p), model_(p.var_ax, p.var_ay, p.var_atheta), w0_(p.w0_default) {}
+    : p_(p), model_(p.var_ax, p.var_ay, p.var_atheta), w0_(p.w0_default), headings_(p.heading) {}
+
+namespace {
+constexpr int kHeadingRows[3] = {2, 5, 8};  // θ, θ̇, θ̈ in the pose filter's state
+}  // namespace
+
+void LegPoseEstimator::takeBestHeading() {
+  const HeadingHypotheses::Hypothesis& b = headings_.best();
+  for (int i = 0; i < 3; ++i) {
+    g_.x(kHeadingRows[i]) = b.x(i);
+    // The heading block is independent of the position blocks in P3's model (eq. 4 is per
+    // axis, the measurement noise diagonal): the cross terms stay zero.
+    for (int r = 0; r < 9; ++r) g_.P(kHeadingRows[i], r) = g_.P(r, kHeadingRows[i]) = 0;
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) g_.P(kHeadingRows[i], kHeadingRows[j]) = b.P(i, j);
+}
 
 void LegPoseEstimator::start(double t, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                              double yaw) {
@@ -40,6 +56,14 @@ void LegPoseEstimator::start(double t, const Eigen::Vector2d& a, const Eigen::Ve
   // The starting facing is the caller's knowledge (leg_pose: P3's frontal following).
   facing_walked_ = p_.backward_walk_max;
   body_d_ = rotate(-yaw, left_ - right_);
+  if (multiHeading()) {
+    Eigen::Matrix3d P = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) P(i, j) = g_.P(kHeadingRows[i], kHeadingRows[j]);
+    headings_.start({yaw, 0, 0}, P);
+    walk_.x = Eigen::Vector4d(g_.x(0), g_.x(1), 0, 0);
+    walk_.P = Eigen::Vector4d(sp * sp, sp * sp, 1, 1).asDiagonal();
+  }
   started_ = true;
   pred_left_ = left_;
   pred_right_ = right_;
@@ -48,7 +72,8 @@ void LegPoseEstimator::start(double t, const Eigen::Vector2d& a, const Eigen::Ve
 void LegPoseEstimator::predict(double t) {
   const double dt = std::max(0.0, t - t_);
   prev_yaw_ = g_.x(2);
-  if (hidden_left_ > 0 && hidden_right_ > 0) {
+  const bool coasting = hidden_left_ > 0 && hidden_right_ > 0;
+  if (coasting) {
     // Coasting (no leg last scan): P3's constant acceleration, driven by σ_a = 10 m/s², would
     // extrapolate a stride's acceleration quadratically; a person unseen keeps at most their
     // speed, bounded by a brisk walk.
@@ -60,6 +85,11 @@ void LegPoseEstimator::predict(double t) {
   if (dt > 0) kalmanPredict(g_, model_, dt);
   g_.x(2) = wrapAngle(g_.x(2));
   clampTurnRate();
+  if (multiHeading()) {
+    headings_.predict(dt, p_.var_atheta, p_.max_turn_rate, coasting);
+    takeBestHeading();
+    if (dt > 0) kalmanPredict(walk_, walk_model_, dt);
+  }
   hidden_left_ += dt;
   hidden_right_ += dt;
   dt_ = dt;
@@ -132,13 +162,37 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
     right_ = right.p;
     hidden_right_ = 0;
   }
+  // The hypotheses' leg vector: with a leg hidden, eq. 6's point alone (W₀ behind the visible
+  // leg, away from the scanner). Eq. 7's blend leans on the predicted leg, which follows the
+  // predicted heading: read back as an orientation, it would confirm whatever turn the
+  // heading was predicted to make.
+  Eigen::Vector2d legs_d = Eigen::Vector2d::Zero();
   if (!right.seen) {
     right_ = p_.occlusion ? hiddenLeg(sensor, left_, pred_right_, w0_, hidden_right_) : pred_right_;
+    legs_d = left_ - (p_.occlusion ? hiddenLeg(sensor, left_, pred_right_, w0_, INFINITY) : right_);
     inferred = true;
   } else if (!left.seen) {
     left_ = p_.occlusion ? hiddenLeg(sensor, right_, pred_left_, w0_, hidden_left_) : pred_left_;
+    legs_d = (p_.occlusion ? hiddenLeg(sensor, right_, pred_left_, w0_, INFINITY) : left_) - right_;
     inferred = true;
+  } else {
+    legs_d = left_ - right_;
   }
+  const double k = inferred ? p_.inferred_sigma_scale : 1.0;
+  bool observable = false;
+  const double innovation = multiHeading() ? updateWithHypotheses(legs_d, k, observable)
+                                           : updateWithZoning(k, observable);
+  updateFromMotion();
+  clampTurnRate();
+  checkFacing(innovation);
+  body_d_ = rotate(-g_.x(2), left_ - right_);
+  if (!inferred && observable) {
+    learnStepWidth(body_d_.norm());
+    if (isUsual(zone_)) recordGait(t_);
+  }
+}
+
+double LegPoseEstimator::updateWithZoning(double k, bool& observable) {
   const ZoneResult z = zoneOrientation(left_, right_, prev_yaw_, w0_, p_.zoning);
   if (z.swap) {
     std::swap(left_, right_);
@@ -146,13 +200,13 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
     legs_swapped_ = true;
   }
   // z = [midpoint, θ_m] (eq. 5); the midpoint alone when the legs give no orientation.
+  observable = z.observable;
   const int rows = z.observable ? 3 : 2;
   Eigen::VectorXd meas(rows);
   meas.head<2>() = 0.5 * (left_ + right_);
   LinearMeasurement m;
   m.H = Eigen::MatrixXd::Zero(rows, 9);
   m.H.leftCols(rows).setIdentity();
-  const double k = inferred ? p_.inferred_sigma_scale : 1.0;
   const double sp = k * p_.sigma_xy, st = k * p_.sigma_theta;
   m.R = Eigen::MatrixXd::Zero(rows, rows);
   m.R(0, 0) = m.R(1, 1) = sp * sp;
@@ -177,14 +231,45 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
   }
   kalmanUpdate(g_, m, meas);
   g_.x(2) = wrapAngle(g_.x(2));
-  updateFromMotion();
-  clampTurnRate();
-  checkFacing(innovation);
-  body_d_ = rotate(-g_.x(2), left_ - right_);
-  if (!inferred && z.observable) {
-    learnStepWidth(body_d_.norm());
-    if (isUsual(zone_)) recordGait(t_);
+  return innovation;
+}
+
+double LegPoseEstimator::updateWithHypotheses(const Eigen::Vector2d& legs_d, double k,
+                                              bool& observable) {
+  // The position: the legs' midpoint (eq. 5's first two rows).
+  LinearMeasurement m;
+  m.H = Eigen::MatrixXd::Zero(2, 9);
+  m.H.leftCols(2).setIdentity();
+  const double sp = k * p_.sigma_xy;
+  m.R = Eigen::MatrixXd::Identity(2, 2) * sp * sp;
+  kalmanUpdate(g_, m, 0.5 * (left_ + right_));
+  LinearMeasurement wm;
+  wm.H = Eigen::MatrixXd::Identity(2, 4);
+  wm.R = m.R;
+  kalmanUpdate(walk_, wm, 0.5 * (left_ + right_));
+  const Eigen::Vector2d walk_v = walk_.x.segment<2>(2);
+  const double walk_v_sigma = std::sqrt(std::max(walk_.P(2, 2), walk_.P(3, 3)));
+  // The heading: every hypothesis against every reading the leg vector allows. A hidden leg
+  // bounds it (eq. 6's geometry); without occlusion handling the hidden leg is the predicted
+  // one, whose vector would only echo the predicted heading: no reading.
+  std::vector<HeadingReading> readings;
+  if (k == 1)
+    readings = legHeadingReadings(legs_d, w0_, p_.heading.sigma_leg, p_.heading.sigma_floor, k);
+  else if (p_.occlusion)
+    readings = hiddenLegHeadingBound(legs_d, p_.heading.hidden_spread, p_.heading.sigma_floor);
+  observable = !readings.empty();
+  headings_.update(readings, walk_v, walk_v_sigma, dt_, p_.max_turn_rate);
+  takeBestHeading();
+  if (observable) {
+    // Left is the leg on the heading's left (in a walker's body frame it always is).
+    if ((left_ - right_).dot(rotate(g_.x(2), {0, 1})) < 0) {
+      std::swap(left_, right_);
+      std::swap(hidden_left_, hidden_right_);
+      legs_swapped_ = true;
+    }
+    zone_ = zoneOrientation(left_, right_, g_.x(2), w0_, p_.zoning).zone;
   }
+  return headings_.best().innovation;
 }
 
 void LegPoseEstimator::learnStepWidth(double distance) {
@@ -214,7 +299,7 @@ void LegPoseEstimator::recordGait(double t) {
 }
 
 void LegPoseEstimator::updateFromMotion() {
-  if (p_.motion_heading_sigma <= 0) return;
+  if (p_.motion_heading_sigma <= 0 || multiHeading()) return;  // the hypotheses weigh motion
   const Eigen::Vector2d v = velocity();
   if (v.norm() < p_.motion_heading_speed) return;
   const double heading = std::atan2(v.y(), v.x());
@@ -255,12 +340,14 @@ void LegPoseEstimator::checkFacing(double innovation) {
 void LegPoseEstimator::retune(const LegPoseParams& p) {
   p_ = p;
   model_ = PoseConstantAcceleration(p.var_ax, p.var_ay, p.var_atheta);
+  headings_.setParams(p.heading);
 }
 
 void LegPoseEstimator::turnAround() {
   g_.x(2) = wrapAngle(g_.x(2) + M_PI);
   g_.x(5) = 0;  // the turn rate belonged to the wrong facing
   g_.x(8) = 0;
+  if (multiHeading()) headings_.turnAround();
   std::swap(left_, right_);
   std::swap(pred_left_, pred_right_);
   std::swap(hidden_left_, hidden_right_);

@@ -74,6 +74,49 @@ std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
       ParamSpec::real("slight_turn_max", d.zoning.slight_turn_max * deg, "deg", 0, 180,
                       "larger orientation changes are turn-in-place (sagittal axis "
                       "perpendicular to the legs)"),
+      ParamSpec::integer("heading_hypotheses", d.heading.count, "", 0, 256,
+                         "hypotheses of the heading kept over scans (ours): each leg pair allows "
+                         "two headings (either leg ahead) and a side step; 0: P3's zoning, one "
+                         "reading per scan"),
+      ParamSpec::real("heading_gate", d.heading.gate, "sigma", 0.5, 100,
+                      "hypotheses: a reading farther than this from a hypothesis spawns no child"),
+      ParamSpec::real("heading_sigma_leg", d.heading.sigma_leg, "m", 1e-4, 1,
+                      "hypotheses: one leg circle's position error, from which each reading's "
+                      "spread follows"),
+      ParamSpec::real("heading_sigma_floor", d.heading.sigma_floor * deg, "deg", 0, 180,
+                      "hypotheses: no reading is taken as sharper than this"),
+      ParamSpec::real("heading_turn_tau", d.heading.turn_tau, "s", 0, 3600,
+                      "hypotheses: the turn rate reverts to zero with this time constant (people "
+                      "turn in bursts; 0: P3's constant acceleration)"),
+      ParamSpec::real("heading_stop_turn", d.heading.stop_turn_prior, "", 0, 0.5,
+                      "hypotheses: chance per scan that a turn ends (a child with the turn rate "
+                      "zeroed)"),
+      ParamSpec::real("heading_start_turn", d.heading.start_turn_prior, "", 0, 0.5,
+                      "hypotheses: chance per scan that a turn starts (a child whose turn rate "
+                      "may take any value up to ~150 deg/s at once)"),
+      ParamSpec::real("heading_rate_sigma_max", d.heading.rate_sigma_max * deg, "deg/s", 0, 1e5,
+                      "hypotheses: unseen, the turn rate's std. dev. grows no further than this "
+                      "(0: unbounded)"),
+      ParamSpec::real("heading_hidden_spread", d.heading.hidden_spread * deg, "deg", 1, 90,
+                      "hypotheses: a hidden leg bounds the heading to the scanner ray's "
+                      "perpendicular +/- this"),
+      ParamSpec::real("heading_mode_switch", d.heading.mode_switch, "", 0, 0.5,
+                      "hypotheses: chance per scan of starting or ending a backward walk"),
+      ParamSpec::real("heading_backward_per_metre", d.heading.backward_per_metre, "1/m", 0, 100,
+                      "hypotheses: evidence (nats) against each metre walked backward"),
+      ParamSpec::real("heading_motion_speed", d.heading.motion_speed, "m/s", 0, 100,
+                      "hypotheses: at this speed or faster the motion's direction weighs them"),
+      ParamSpec::real("heading_motion_sigma", d.heading.motion_sigma * deg, "deg", 1, 180,
+                      "hypotheses: spread of the motion's direction about forward, backward "
+                      "or sideways"),
+      ParamSpec::real("heading_walk_weight", d.heading.walk_weight, "", 0, 1,
+                      "hypotheses: share of walking scans whose motion is along the sagittal "
+                      "axis (forward or backward)"),
+      ParamSpec::real("heading_sideways_weight", d.heading.sideways_weight, "", 0, 1,
+                      "hypotheses: share of side-step scans in which the motion is sideways"),
+      ParamSpec::real("heading_still_sideways", d.heading.still_sideways_prior, "", 1e-6, 1,
+                      "hypotheses: likelihood factor of a side step read while the person is "
+                      "slower than heading_motion_speed"),
   };
 }
 
@@ -107,6 +150,22 @@ LegPoseParams readLegPoseParams(const ParamSet& s) {
   p.zoning.sideways_tolerance = s.getDouble("sideways_tolerance");
   p.zoning.refine_straight = s.getBool("refine_straight");
   p.zoning.slight_turn_max = s.getDouble("slight_turn_max") * rad;
+  p.heading.count = int(s.getInt("heading_hypotheses"));
+  p.heading.gate = s.getDouble("heading_gate");
+  p.heading.sigma_leg = s.getDouble("heading_sigma_leg");
+  p.heading.sigma_floor = s.getDouble("heading_sigma_floor") * rad;
+  p.heading.motion_speed = s.getDouble("heading_motion_speed");
+  p.heading.turn_tau = s.getDouble("heading_turn_tau");
+  p.heading.stop_turn_prior = s.getDouble("heading_stop_turn");
+  p.heading.start_turn_prior = s.getDouble("heading_start_turn");
+  p.heading.rate_sigma_max = s.getDouble("heading_rate_sigma_max") * rad;
+  p.heading.hidden_spread = s.getDouble("heading_hidden_spread") * rad;
+  p.heading.mode_switch = s.getDouble("heading_mode_switch");
+  p.heading.backward_per_metre = s.getDouble("heading_backward_per_metre");
+  p.heading.motion_sigma = s.getDouble("heading_motion_sigma") * rad;
+  p.heading.walk_weight = s.getDouble("heading_walk_weight");
+  p.heading.sideways_weight = s.getDouble("heading_sideways_weight");
+  p.heading.still_sideways_prior = s.getDouble("heading_still_sideways");
   return p;
 }
 

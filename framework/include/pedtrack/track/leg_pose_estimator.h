@@ -11,6 +11,7 @@
 
 #include "pedtrack/track/gait_model.h"
 #include "pedtrack/track/gaussian.h"
+#include "pedtrack/track/heading_hypotheses.h"
 #include "pedtrack/track/leg_zoning.h"
 #include "pedtrack/track/motion_models.h"
 
@@ -68,6 +69,10 @@ struct LegPoseParams {
                               const gait::Params& previous) = nullptr;
   ZoningParams zoning;
   gait::Bounds gait;
+  /// The heading over several scans (heading_hypotheses.h; ours): with count > 0 it replaces
+  /// the zoning's single orientation reading, the turn-rate bound and the gate (the zoning
+  /// still names the zone); 0: P3's zoning.
+  HeadingHypothesesParams heading;
 };
 
 /// A leg measurement in the fixed frame, or none.
@@ -134,6 +139,14 @@ class LegPoseEstimator {
   void clampTurnRate();
   void updateFromMotion();
   void checkFacing(double innovation);
+  bool multiHeading() const { return p_.heading.count > 0; }
+  /// The pose filter's heading block (θ, θ̇, θ̈) set to the best hypothesis's.
+  void takeBestHeading();
+  /// update()'s measurement step, `k` the noise factor (inferred legs), `observable` whether
+  /// the legs gave an orientation; returns the heading's innovation (for the facing check).
+  double updateWithZoning(double k, bool& observable);  // P3's single reading
+  double updateWithHypotheses(const Eigen::Vector2d& legs_d, double k,
+                              bool& observable);  // heading_hypotheses.h
 
   LegPoseParams p_;
   PoseConstantAcceleration model_;
@@ -155,6 +168,12 @@ class LegPoseEstimator {
   std::vector<gait::Sample> samples_;                 // newest first
   gait::Params gait_;
   Eigen::Vector2d pred_left_, pred_right_, left_, right_;
+  HeadingHypotheses headings_;
+  // The hypotheses' motion evidence: a walker's constant-velocity filter on the legs'
+  // midpoint. P3's pose filter (σ_a = 10 m/s²) follows every leg fit, and its velocity reads
+  // half a metre per second on someone standing still.
+  ConstantVelocity walk_model_{1.0};  // q, m²/s³: a walker's gentle speed changes
+  Gaussian walk_;
 };
 
 }  // namespace pedtrack::track

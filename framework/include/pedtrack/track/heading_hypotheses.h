@@ -1,0 +1,136 @@
+#pragma once
+// A person's heading from their two legs over several scans (ours, on top of P3 §2.3): a bank of
+// hypotheses, each a constant-acceleration Kalman filter on [θ, θ̇, θ̈] (the heading block of
+// P3's eq. 4, which the position blocks do not touch), weighed by how well it explains the
+// scans so far.
+//
+// Why several: in the body frame a walker's leg vector d = left − right is (L_p, W₀), the
+// sagittal spread L_p swinging with the gait and the frontal one the step width. One scan gives
+// |d| and its direction, so L_p = ±√(|d|² − W₀²): two headings explain it, one per leg ahead,
+// up to 2·atan(|L_p| / W₀) apart (over 100° at a brisk stride). P3's zoning takes the one
+// nearer the previous heading; mid-turn that is often the wrong one (the turn stalls), and the
+// zoning's turn-in-place reading, the perpendicular of d, is their mean and lags the body by
+// atan(|L_p| / W₀). Only over several scans do the branches part: the right one turns smoothly,
+// the wrong one swings with the gait. Each hypothesis takes each reading it can explain as a
+// child; children are weighed by the reading's likelihood and by whether the person's motion
+// agrees (people walk forward; legs open side by side only in a side step, with the body
+// moving sideways), near-duplicates merge and the `count` best survive.
+#include <Eigen/Core>
+#include <vector>
+
+namespace pedtrack::track {
+
+struct HeadingHypothesesParams {
+  int count = 8;  ///< hypotheses kept (0: off, P3's single zoning reading)
+  /// σ: a reading farther than this from a hypothesis's predicted heading spawns no child.
+  double gate = 4;
+  /// m, one leg circle's position error (the readings' geometric spread is derived from it).
+  double sigma_leg = 0.02;
+  double sigma_floor = 0.05;  ///< rad, no reading is taken as sharper than this
+  /// Motion evidence: at motion_speed or faster the velocity's direction ψ is compared with
+  /// a child's heading θ. A walking child (legs along the gait) expects ψ − θ ≈ 0, or ≈ π while
+  /// it is in its walking-backward mode, in walk_weight of the scans (anything in the rest); a
+  /// side-step child (legs opened side by side) expects ψ − θ ≈ ±π/2 in sideways_weight.
+  /// Walking backward is a mode a person keeps for a while (P3 scenario 1 backs up 2 m), not a
+  /// per-scan chance: entering or leaving it costs mode_switch once, and each metre walked in
+  /// it backward_per_metre nats. So a hypothesis cannot swing round to face the way a
+  /// backward walker goes, nor settle facing backward on a forward walker.
+  double motion_speed = 0.3;          ///< m/s
+  double motion_sigma = 0.7;          ///< rad, spread of ψ − θ about each expected direction
+  double walk_weight = 0.6;           ///< see motion_speed
+  double sideways_weight = 0.6;       ///< see motion_speed
+  double mode_switch = 0.02;          ///< chance per scan of starting or ending a backward walk
+  double backward_per_metre = 1.0;    ///< nats per metre walked backward
+  double still_sideways_prior = 0.1;  ///< a side step read while slower than motion_speed
+  /// Chance per scan that a turning person stops turning: each hypothesis also has a child
+  /// with the turn rate and acceleration zeroed. A turn ends within a step; the constant-
+  /// acceleration model alone would carry the heading on past it for several scans.
+  double stop_turn_prior = 0.05;
+  /// Chance per scan that a turn starts: each hypothesis also has a child whose turn-rate
+  /// variance is opened by start_turn_rate², so a reading can set the rate at once.
+  double start_turn_prior = 0.05;
+  double start_turn_rate = 2.6;  ///< rad/s (150°/s: a brisk turn)
+  /// s, the turn rate and its change revert to zero with this time constant (0: P3's constant
+  /// acceleration): people turn in bursts of a step or two, and with the legs hidden for a
+  /// few scans a rate kept would carry the heading on far past where the turn ended.
+  double turn_tau = 0.5;
+  /// rad, a hidden leg bounds the heading to the ray's perpendicular ± this (atan of the
+  /// largest sagittal leg spread over the step width: 0.3 / 0.17 m)
+  double hidden_spread = 1.05;
+  /// rad/s and rad/s²: the turn rate's and its change's standard deviations are held below
+  /// these. Unseen (legs hidden, bounds only) they would grow each scan until a hypothesis
+  /// could reach any reading, its mirror image's too (capRateVariance).
+  double rate_sigma_max = 1.0;
+  double accel_sigma_max = 20;
+  double merge_angle = 0.05;  ///< rad: children closer than this (and in rate) merge
+  double prune_log = 12;      ///< children this many nats below the best are dropped
+};
+
+/// One heading reading from a leg pair.
+struct HeadingReading {
+  double yaw = 0;         ///< rad
+  double sigma = 0;       ///< rad
+  bool sideways = false;  ///< legs side by side opened by a side step (else along the gait)
+  /// > 0: not a measurement but a bound, the heading within ±spread of `yaw` (a leg hidden
+  /// behind the other: the legs lie along the scanner's ray, so the heading is the ray's
+  /// perpendicular give or take atan(L_p / W₀), L_p unknown). A hypothesis outside it loses
+  /// weight (`sigma` the bound's softness); none moves. Consecutive scans of one occlusion
+  /// repeat the same geometry, so as measurements they would add up to a false certainty.
+  double spread = 0;
+};
+
+/// The readings a leg vector d = left − right allows, for step width w0: the two gait branches
+/// (L_p = ±√(|d|² − w0²); one when |d| ≤ w0), the side-step reading (d's perpendicular; only
+/// when |d| > w0) and the same for −d (left and right the other way round), each σ from
+/// sigma_leg and `floor`, multiplied by `scale`. None when |d| < w0 / 2.
+std::vector<HeadingReading> legHeadingReadings(const Eigen::Vector2d& d, double w0,
+                                               double sigma_leg, double floor, double scale);
+/// The bound a hidden leg gives: d (visible leg minus eq. 6's point behind it, or the reverse)
+/// lies along the ray, the heading within ±spread of its perpendicular, either way round.
+std::vector<HeadingReading> hiddenLegHeadingBound(const Eigen::Vector2d& d, double spread,
+                                                  double softness);
+
+class HeadingHypotheses {
+ public:
+  struct Hypothesis {
+    Eigen::Vector3d x;  ///< θ, θ̇, θ̈
+    Eigen::Matrix3d P;
+    double log_w = 0;
+    bool backward = false;  ///< walking backward (see HeadingHypothesesParams::mode_switch)
+    double innovation = 0;  ///< its last reading minus its prediction, rad
+  };
+
+  HeadingHypotheses() = default;
+  explicit HeadingHypotheses(const HeadingHypothesesParams& p) : p_(p) {}
+  void setParams(const HeadingHypothesesParams& p) { p_ = p; }
+
+  /// One hypothesis: this heading, rate and acceleration with covariance P (3×3).
+  void start(const Eigen::Vector3d& x, const Eigen::Matrix3d& P);
+  /// Every hypothesis predicted by dt with the acceleration variance var_a ((rad/s²)²), the
+  /// rate held within ±max_rate (0: unbounded); `coast` (no leg seen) clears the acceleration
+  /// first, as the pose filter's coasting does.
+  void predict(double dt, double var_a, double max_rate, bool coast);
+  /// Children per reading within the gate, weighed; `velocity` the person's, fixed frame.
+  /// No readings: the hypotheses stay as predicted.
+  /// `velocity_sigma` (m/s) its standard deviation: the motion's direction is then uncertain
+  /// by about velocity_sigma / speed on top of motion_sigma.
+  void update(const std::vector<HeadingReading>& readings, const Eigen::Vector2d& velocity,
+              double velocity_sigma, double dt, double max_rate);
+  /// Every hypothesis turned round by π (the facing check), rate and acceleration cleared.
+  void turnAround();
+
+  const Hypothesis& best() const { return h_.front(); }
+  const std::vector<Hypothesis>& all() const { return h_; }  ///< best first
+  bool empty() const { return h_.empty(); }
+
+ private:
+  double motionLogLikelihood(double yaw, bool sideways, bool backward, const Eigen::Vector2d& v,
+                             double dt) const;
+  void capRateVariance(Eigen::Matrix3d& P) const;
+  double motion_sigma_ = 0;  // this update's spread of the motion's direction, rad
+
+  HeadingHypothesesParams p_;
+  std::vector<Hypothesis> h_;
+};
+
+}  // namespace pedtrack::track
