@@ -73,7 +73,7 @@ TEST_CASE("a leg vector allows two gait branches, a side step, and their mirror 
   // perpendicular, β − π/2 = θ − atan(L/W); each also + π.
   const double theta = 30 * M_PI / 180, L = 0.25, W = 0.18, sigma_leg = 0.02;
   const std::vector<HeadingReading> rs =
-      legHeadingReadings(rotated(theta, L, W), W, sigma_leg, 0.0, 1.0);
+      legHeadingReadings(rotated(theta, L, W), W, sigma_leg, 0.0);
   REQUIRE(rs.size() == 6);
   const double other = theta - 2 * std::atan(L / W), side = theta - std::atan(L / W);
   for (double flip : {0.0, M_PI}) {
@@ -84,15 +84,15 @@ TEST_CASE("a leg vector allows two gait branches, a side step, and their mirror 
   // A branch's spread: d's direction, σ_d / ρ, and asin's slope, W σ_d / (ρ L), σ_d = √2 σ_leg.
   const double rho = std::hypot(L, W), sd = std::sqrt(2.0) * sigma_leg;
   CHECK(rs[0].sigma == Approx(std::hypot(sd / rho, W * sd / (rho * L))));
-  // No reading is sharper than the floor; inferred legs scale it.
-  CHECK(legHeadingReadings(rotated(theta, L, W), W, sigma_leg, 0.2, 3.0)[0].sigma == Approx(0.6));
+  // No reading is sharper than the floor.
+  CHECK(legHeadingReadings(rotated(theta, L, W), W, sigma_leg, 0.2)[0].sigma == Approx(0.2));
   // Legs passing each other (L within 2 σ_d): one reading, the perpendicular, and its mirror.
   const std::vector<HeadingReading> passing =
-      legHeadingReadings(rotated(theta, 0.02, W), W, sigma_leg, 0.0, 1.0);
+      legHeadingReadings(rotated(theta, 0.02, W), W, sigma_leg, 0.0);
   REQUIRE(passing.size() == 2);
   CHECK(angleDiff(passing[0].yaw, theta + std::atan2(W, 0.02) - M_PI / 2) < 1e-9);
   // Legs closer than half a step width give nothing.
-  CHECK(legHeadingReadings(rotated(theta, 0.0, 0.08), W, sigma_leg, 0.0, 1.0).empty());
+  CHECK(legHeadingReadings(rotated(theta, 0.0, 0.08), W, sigma_leg, 0.0).empty());
 }
 
 TEST_CASE("a hidden leg bounds the heading to the ray's perpendicular, either way", "[heading]") {
@@ -101,18 +101,27 @@ TEST_CASE("a hidden leg bounds the heading to the ray's perpendicular, either wa
   CHECK(angleDiff(b[0].yaw, -M_PI) < 1e-9);  // d along −y: perpendicular ∓ x
   CHECK(angleDiff(b[1].yaw, 0.0) < 1e-9);
   CHECK(b[0].spread == 1.0);
-  // A hypothesis outside the bound loses weight; one inside keeps it; neither moves.
+  // A hypothesis outside the bound loses weight against one inside it; neither moves. Both
+  // start at weight 0: 0.2 rad (inside ±0.5 of 0) and 1.2 rad (0.7 outside). Inside, the bound
+  // child (log 0.95) absorbs the all-clutter one (log 0.05/2π); outside, the bound child falls
+  // by ½(0.7 / 0.1)² = 24.5 nats and the all-clutter explanation is what is left.
   HeadingHypothesesParams p;
   p.stop_turn_prior = p.start_turn_prior = 0;
+  const Eigen::Matrix3d P = Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal();
   HeadingHypotheses h(p);
-  h.start({0.2, 0, 0}, Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal());
+  h.start({{Eigen::Vector3d(0.2, 0, 0), P}, {Eigen::Vector3d(1.2, 0, 0), P}});
   h.update(hiddenLegHeadingBound({0.0, -0.18}, 0.5, 0.1), {0, 0}, 0.1, 0.1, 0);
-  CHECK(h.best().x(0) == Approx(0.2));
-  CHECK(h.best().log_w == 0);
+  REQUIRE(h.all().size() == 2);
+  CHECK(h.all()[0].x(0) == Approx(0.2));
+  CHECK(h.all()[1].x(0) == Approx(1.2));
+  const double clutter = 0.05 / (2 * M_PI);
+  CHECK(h.all()[1].log_w == Approx(std::log(clutter) - std::log(0.95 + clutter)).margin(1e-3));
 }
 
 TEST_CASE("unseen, the turn rate's variance stays within rate_sigma_max", "[heading]") {
   HeadingHypothesesParams p;
+  p.turn_tau = 0;  // P3's constant acceleration, whose variances grow fastest
+  p.accel_sigma_max = 5;
   HeadingHypotheses h(p);
   h.start({0, 0, 0}, Eigen::Matrix3d::Identity() * 1e-4);
   for (int k = 0; k < 50; ++k) h.predict(0.1, M_PI * M_PI, 0, false);
@@ -186,7 +195,7 @@ TEST_CASE("the motion tells a side step from a turn when the legs cannot", "[hea
   auto best_after = [&](const Eigen::Vector2d& velocity) {
     HeadingHypotheses h(p);
     h.start({0, 0, 0}, Eigen::Vector3d(0.27, 1e-4, 1e-4).asDiagonal());
-    h.update(legHeadingReadings(d, W, 0.02, 0.05, 1), velocity, 0.05, 0.1, 0);
+    h.update(legHeadingReadings(d, W, 0.02, 0.05), velocity, 0.05, 0.1, 0);
     return h.best().x(0);
   };
   // Moving sideways (+y) at 0.5 m/s: the side step; the heading stays.
@@ -196,4 +205,22 @@ TEST_CASE("the motion tells a side step from a turn when the legs cannot", "[hea
   const double standing = best_after({0, 0});
   CHECK(angleDiff(standing, 0) > 20 * M_PI / 180);
   CHECK(angleDiff(standing, 0) < std::acos(W / 0.3));
+}
+
+TEST_CASE("hypotheses switched on mid-track start from the pose filter's heading", "[heading]") {
+  // leg_people retunes a person's estimator on confirmation; turning the hypotheses on then
+  // must start them from the heading so far, not from nothing.
+  auto yaw = [](double) { return M_PI / 2; };
+  auto legs = [](double t) {
+    return bodyLegs({0, 0.8 * t}, M_PI / 2, 0.25 * std::sin(2 * M_PI * 0.9 * t), 0.18);
+  };
+  LegPoseEstimator est(withHypotheses(0));
+  meanHeadingError(est, legs, yaw, 20, 0);
+  const double before = est.yaw();
+  est.retune(withHypotheses(8));
+  est.predict(2.1);
+  CHECK(angleDiff(est.yaw(), before) < 5 * M_PI / 180);
+  const auto [l, r] = legs(2.1);
+  est.update({true, l}, {true, r}, {4, 0});
+  CHECK(angleDiff(est.yaw(), M_PI / 2) < 10 * M_PI / 180);
 }

@@ -172,7 +172,7 @@ TEST_CASE("the leg pose estimator tracks a straight walk and its heading", "[leg
   // the two-line construction by a few degrees at mid-stride.
   INFO("heading MAE " << sum_yaw / scored * 180 / M_PI << " deg, worst " << worst_yaw * 180 / M_PI);
   CHECK(sum_yaw / scored < 2.5 * M_PI / 180);
-  CHECK(worst_yaw < 8 * M_PI / 180);
+  CHECK(worst_yaw < (hypotheses ? 8 : 7) * M_PI / 180);  // measured 7.4° / 5.5°
   CHECK(worst_pos < 0.05);
   CHECK(est.stepWidth() == Approx(w).margin(0.03));
   CHECK(est.gait().valid);
@@ -493,8 +493,10 @@ TEST_CASE("the facing check turns round an estimate that walks backward too far"
   // and right swapped to match: the mirror image, which explains every scan as well.
   const double facing = M_PI, speed = 0.7;
   const auto [l0, r0] = walkerLegs(0, facing, speed);
+  LegPoseParams zoning;  // the zoning's single reading, as P3
+  zoning.heading.count = 0;
   SECTION("on: turned round once, within backward_walk_max + mirror_margin = 2.8 m") {
-    LegPoseEstimator est(LegPoseParams{});
+    LegPoseEstimator est(zoning);
     est.start(0, l0, r0, 0);
     const std::vector<double> turned = feedWalker(est, 0.1, 8, facing, speed);
     REQUIRE(turned.size() == 1);
@@ -505,7 +507,7 @@ TEST_CASE("the facing check turns round an estimate that walks backward too far"
     CHECK(angleDiff(est.yaw(), facing) < 10 * M_PI / 180);
   }
   SECTION("off (P3): the mirror image is kept") {
-    LegPoseParams p;
+    LegPoseParams p = zoning;
     p.backward_walk_max = 0;
     LegPoseEstimator est(p);
     est.start(0, l0, r0, 0);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "pedtrack/track/gaussian.h"
 
@@ -28,7 +29,7 @@ double logSumExp(double a, double b) {
 }  // namespace
 
 std::vector<HeadingReading> legHeadingReadings(const Eigen::Vector2d& d, double w0,
-                                               double sigma_leg, double floor, double scale) {
+                                               double sigma_leg, double floor) {
   std::vector<HeadingReading> out;
   const double rho = d.norm();
   if (!(w0 > 0) || rho < 0.5 * w0) return out;
@@ -37,7 +38,7 @@ std::vector<HeadingReading> legHeadingReadings(const Eigen::Vector2d& d, double 
   const double s_dir = sd / rho;                 // the direction of d
   auto add = [&](double yaw, double sigma, bool sideways) {
     for (double flip : {0.0, M_PI})  // d, and −d (left and right the other way round)
-      out.push_back({wrapAngle(yaw + flip), std::max(sigma, floor) * scale, sideways});
+      out.push_back({wrapAngle(yaw + flip), std::max(sigma, floor), sideways});
   };
   // d = R(θ)·(L, W₀), |L| = √(ρ² − W₀²): θ = β − atan2(W₀, ±|L|).
   const double L = std::sqrt(std::max(0.0, rho * rho - w0 * w0));
@@ -83,6 +84,12 @@ void HeadingHypotheses::start(const Eigen::Vector3d& x, const Eigen::Matrix3d& P
   h_.assign(1, Hypothesis{x, P, 0.0, false, 0.0});
 }
 
+void HeadingHypotheses::start(std::vector<Hypothesis> hypotheses) {
+  h_ = std::move(hypotheses);
+  std::sort(h_.begin(), h_.end(),
+            [](const Hypothesis& a, const Hypothesis& b) { return a.log_w > b.log_w; });
+}
+
 void HeadingHypotheses::predict(double dt, double var_a, double max_rate, bool coast) {
   if (coast)
     for (Hypothesis& h : h_) h.x(2) = 0;
@@ -108,10 +115,11 @@ void HeadingHypotheses::predict(double dt, double var_a, double max_rate, bool c
 }
 
 double HeadingHypotheses::motionLogLikelihood(double yaw, bool sideways, bool backward,
-                                              const Eigen::Vector2d& v, double dt) const {
+                                              const Eigen::Vector2d& v, double spread,
+                                              double dt) const {
   const double speed = v.norm();
   if (speed < p_.motion_speed) return sideways ? std::log(p_.still_sideways_prior) : 0.0;
-  const double psi = std::atan2(v.y(), v.x()), s = motion_sigma_;
+  const double psi = std::atan2(v.y(), v.x()), s = spread;
   // Relative to a direction-blind model (density 1/2π): > 0 agrees, < 0 disagrees.
   if (sideways) {
     const double side =
@@ -127,7 +135,7 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
                                const Eigen::Vector2d& velocity, double velocity_sigma, double dt,
                                double max_rate) {
   const double speed = velocity.norm();
-  motion_sigma_ = std::hypot(p_.motion_sigma, speed > 0 ? velocity_sigma / speed : 0.0);
+  const double spread = std::hypot(p_.motion_sigma, speed > 0 ? velocity_sigma / speed : 0.0);
   if (readings.empty() || h_.empty()) return;
   std::vector<Hypothesis> children;
   children.reserve(h_.size() * (readings.size() + 1));
@@ -135,7 +143,7 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
   const double log_real = std::log(1 - kClutterShare);
   const double log_stop = std::log(p_.stop_turn_prior), log_go = std::log(1 - p_.stop_turn_prior);
   const double log_switch = std::log(p_.mode_switch), log_stay = std::log(1 - p_.mode_switch);
-  const bool moving = velocity.norm() >= p_.motion_speed;
+  const bool moving = speed >= p_.motion_speed;
   for (const Hypothesis& parent : h_) {
     // The parent as predicted; stopped turning (when it was turning at all); starting a turn
     // (the turn rate's variance opened: turns in place start within a step).
@@ -160,7 +168,8 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
       const Hypothesis& h = variants[v];
       // Every reading clutter: the hypothesis as predicted.
       Hypothesis keep = h;
-      keep.log_w += log_clutter;
+      keep.log_w +=
+          log_clutter + motionLogLikelihood(keep.x(0), false, keep.backward, velocity, spread, dt);
       keep.innovation = 0;
       children.push_back(keep);
       for (const HeadingReading& r : readings) {
@@ -170,10 +179,10 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
         if (std::abs(nu) > M_PI / 2) continue;
         if (r.spread > 0) {
           Hypothesis c = h;
-          const double out = std::max(0.0, std::abs(nu) - r.spread) / r.sigma;
+          const double out = std::max(0.0, std::abs(nu) - r.spread) / std::max(r.sigma, 1e-3);
           c.innovation = 0;
           c.log_w += log_real - 0.5 * out * out +
-                     motionLogLikelihood(c.x(0), false, c.backward, velocity, dt);
+                     motionLogLikelihood(c.x(0), false, c.backward, velocity, spread, dt);
           children.push_back(c);
           continue;
         }
@@ -192,7 +201,7 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
           Hypothesis m = c;
           if (switchable) m.log_w += sw ? log_switch : log_stay;
           if (sw) m.backward = !m.backward;
-          m.log_w += motionLogLikelihood(m.x(0), r.sideways, m.backward, velocity, dt);
+          m.log_w += motionLogLikelihood(m.x(0), r.sideways, m.backward, velocity, spread, dt);
           children.push_back(m);
         }
       }

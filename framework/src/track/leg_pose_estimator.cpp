@@ -56,14 +56,7 @@ void LegPoseEstimator::start(double t, const Eigen::Vector2d& a, const Eigen::Ve
   // The starting facing is the caller's knowledge (leg_pose: P3's frontal following).
   facing_walked_ = p_.backward_walk_max;
   body_d_ = rotate(-yaw, left_ - right_);
-  if (multiHeading()) {
-    Eigen::Matrix3d P = Eigen::Matrix3d::Zero();
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) P(i, j) = g_.P(kHeadingRows[i], kHeadingRows[j]);
-    headings_.start({yaw, 0, 0}, P);
-    walk_.x = Eigen::Vector4d(g_.x(0), g_.x(1), 0, 0);
-    walk_.P = Eigen::Vector4d(sp * sp, sp * sp, 1, 1).asDiagonal();
-  }
+  if (multiHeading()) startHeadings();
   started_ = true;
   pred_left_ = left_;
   pred_right_ = right_;
@@ -180,7 +173,7 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
   }
   const double k = inferred ? p_.inferred_sigma_scale : 1.0;
   bool observable = false;
-  const double innovation = multiHeading() ? updateWithHypotheses(legs_d, k, observable)
+  const double innovation = multiHeading() ? updateWithHypotheses(legs_d, inferred, observable)
                                            : updateWithZoning(k, observable);
   updateFromMotion();
   clampTurnRate();
@@ -234,8 +227,9 @@ double LegPoseEstimator::updateWithZoning(double k, bool& observable) {
   return innovation;
 }
 
-double LegPoseEstimator::updateWithHypotheses(const Eigen::Vector2d& legs_d, double k,
+double LegPoseEstimator::updateWithHypotheses(const Eigen::Vector2d& legs_d, bool inferred,
                                               bool& observable) {
+  const double k = inferred ? p_.inferred_sigma_scale : 1.0;
   // The position: the legs' midpoint (eq. 5's first two rows).
   LinearMeasurement m;
   m.H = Eigen::MatrixXd::Zero(2, 9);
@@ -253,8 +247,8 @@ double LegPoseEstimator::updateWithHypotheses(const Eigen::Vector2d& legs_d, dou
   // bounds it (eq. 6's geometry); without occlusion handling the hidden leg is the predicted
   // one, whose vector would only echo the predicted heading: no reading.
   std::vector<HeadingReading> readings;
-  if (k == 1)
-    readings = legHeadingReadings(legs_d, w0_, p_.heading.sigma_leg, p_.heading.sigma_floor, k);
+  if (!inferred)
+    readings = legHeadingReadings(legs_d, w0_, p_.heading.sigma_leg, p_.heading.sigma_floor);
   else if (p_.occlusion)
     readings = hiddenLegHeadingBound(legs_d, p_.heading.hidden_spread, p_.heading.sigma_floor);
   observable = !readings.empty();
@@ -338,9 +332,25 @@ void LegPoseEstimator::checkFacing(double innovation) {
 }
 
 void LegPoseEstimator::retune(const LegPoseParams& p) {
+  const bool had_hypotheses = multiHeading();
   p_ = p;
   model_ = PoseConstantAcceleration(p.var_ax, p.var_ay, p.var_atheta);
   headings_.setParams(p.heading);
+  if (started_ && multiHeading() && !had_hypotheses) startHeadings();
+}
+
+void LegPoseEstimator::startHeadings() {
+  // One hypothesis, the pose filter's heading block; the walk filter from its position and
+  // velocity, the velocity's variance as the pose filter has it.
+  Eigen::Vector3d x;
+  Eigen::Matrix3d P;
+  for (int i = 0; i < 3; ++i) {
+    x(i) = g_.x(kHeadingRows[i]);
+    for (int j = 0; j < 3; ++j) P(i, j) = g_.P(kHeadingRows[i], kHeadingRows[j]);
+  }
+  headings_.start(x, P);
+  walk_.x = Eigen::Vector4d(g_.x(0), g_.x(1), g_.x(3), g_.x(4));
+  walk_.P = Eigen::Vector4d(g_.P(0, 0), g_.P(1, 1), g_.P(3, 3), g_.P(4, 4)).asDiagonal();
 }
 
 void LegPoseEstimator::turnAround() {

@@ -83,8 +83,9 @@ std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
       ParamSpec::real("heading_sigma_leg", d.heading.sigma_leg, "m", 1e-4, 1,
                       "hypotheses: one leg circle's position error, from which each reading's "
                       "spread follows"),
-      ParamSpec::real("heading_sigma_floor", d.heading.sigma_floor * deg, "deg", 0, 180,
-                      "hypotheses: no reading is taken as sharper than this"),
+      ParamSpec::real("heading_sigma_floor", d.heading.sigma_floor * deg, "deg", 0.1, 180,
+                      "hypotheses: no reading is taken as sharper than this; also the softness "
+                      "of a hidden leg's bound"),
       ParamSpec::real("heading_turn_tau", d.heading.turn_tau, "s", 0, 3600,
                       "hypotheses: the turn rate reverts to zero with this time constant (people "
                       "turn in bursts; 0: P3's constant acceleration)"),

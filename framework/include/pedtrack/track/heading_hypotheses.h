@@ -42,17 +42,20 @@ struct HeadingHypothesesParams {
   double mode_switch = 0.02;          ///< chance per scan of starting or ending a backward walk
   double backward_per_metre = 1.0;    ///< nats per metre walked backward
   double still_sideways_prior = 0.1;  ///< a side step read while slower than motion_speed
-  /// Chance per scan that a turning person stops turning: each hypothesis also has a child
-  /// with the turn rate and acceleration zeroed. A turn ends within a step; the constant-
-  /// acceleration model alone would carry the heading on past it for several scans.
+  /// Chance per scan that a turning person stops turning: each hypothesis turning faster than
+  /// its rate's standard deviation also has a child with the turn rate and acceleration zeroed. A
+  /// turn ends within a step; the constant- acceleration model alone would carry the heading on
+  /// past it for several scans.
   double stop_turn_prior = 0.05;
   /// Chance per scan that a turn starts: each hypothesis also has a child whose turn-rate
   /// variance is opened by start_turn_rate², so a reading can set the rate at once.
   double start_turn_prior = 0.05;
-  double start_turn_rate = 2.6;  ///< rad/s (150°/s: a brisk turn)
+  double start_turn_rate = 2.6;  ///< rad/s (150°/s: a brisk turn; internal)
   /// s, the turn rate and its change revert to zero with this time constant (0: P3's constant
   /// acceleration): people turn in bursts of a step or two, and with the legs hidden for a
-  /// few scans a rate kept would carry the heading on far past where the turn ended.
+  /// few scans a rate kept would carry the heading on far past where the turn ended. Only the
+  /// transition's diagonal decays (the heading takes the undecayed rate over the step: ~10 %
+  /// more turn at 0.1 s and 0.5 s, well inside the noise).
   double turn_tau = 0.5;
   /// rad, a hidden leg bounds the heading to the ray's perpendicular ± this (atan of the
   /// largest sagittal leg spread over the step width: 0.3 / 0.17 m)
@@ -61,9 +64,9 @@ struct HeadingHypothesesParams {
   /// these. Unseen (legs hidden, bounds only) they would grow each scan until a hypothesis
   /// could reach any reading, its mirror image's too (capRateVariance).
   double rate_sigma_max = 1.0;
-  double accel_sigma_max = 20;
-  double merge_angle = 0.05;  ///< rad: children closer than this (and in rate) merge
-  double prune_log = 12;      ///< children this many nats below the best are dropped
+  double accel_sigma_max = 20;  // internal
+  double merge_angle = 0.05;    ///< rad: children closer than this (and in rate) merge
+  double prune_log = 12;        ///< children this many nats below the best are dropped
 };
 
 /// One heading reading from a leg pair.
@@ -82,9 +85,10 @@ struct HeadingReading {
 /// The readings a leg vector d = left − right allows, for step width w0: the two gait branches
 /// (L_p = ±√(|d|² − w0²); one when |d| ≤ w0), the side-step reading (d's perpendicular; only
 /// when |d| > w0) and the same for −d (left and right the other way round), each σ from
-/// sigma_leg and `floor`, multiplied by `scale`. None when |d| < w0 / 2.
+/// sigma_leg and `floor`. One branch pair (d's perpendicular) while |L_p| ≤ 2·√2·sigma_leg
+/// (the legs passing each other); none when |d| < w0 / 2.
 std::vector<HeadingReading> legHeadingReadings(const Eigen::Vector2d& d, double w0,
-                                               double sigma_leg, double floor, double scale);
+                                               double sigma_leg, double floor);
 /// The bound a hidden leg gives: d (visible leg minus eq. 6's point behind it, or the reverse)
 /// lies along the ray, the heading within ±spread of its perpendicular, either way round.
 std::vector<HeadingReading> hiddenLegHeadingBound(const Eigen::Vector2d& d, double spread,
@@ -106,6 +110,8 @@ class HeadingHypotheses {
 
   /// One hypothesis: this heading, rate and acceleration with covariance P (3×3).
   void start(const Eigen::Vector3d& x, const Eigen::Matrix3d& P);
+  /// Several (e.g. an unknown facing: θ and θ + π), best first after sorting by log_w.
+  void start(std::vector<Hypothesis> hypotheses);
   /// Every hypothesis predicted by dt with the acceleration variance var_a ((rad/s²)²), the
   /// rate held within ±max_rate (0: unbounded); `coast` (no leg seen) clears the acceleration
   /// first, as the pose filter's coasting does.
@@ -124,10 +130,10 @@ class HeadingHypotheses {
   bool empty() const { return h_.empty(); }
 
  private:
+  /// `spread` the motion's direction's, rad (motion_sigma and the velocity's own).
   double motionLogLikelihood(double yaw, bool sideways, bool backward, const Eigen::Vector2d& v,
-                             double dt) const;
+                             double spread, double dt) const;
   void capRateVariance(Eigen::Matrix3d& P) const;
-  double motion_sigma_ = 0;  // this update's spread of the motion's direction, rad
 
   HeadingHypothesesParams p_;
   std::vector<Hypothesis> h_;

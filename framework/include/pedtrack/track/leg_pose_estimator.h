@@ -70,8 +70,8 @@ struct LegPoseParams {
   ZoningParams zoning;
   gait::Bounds gait;
   /// The heading over several scans (heading_hypotheses.h; ours): with count > 0 it replaces
-  /// the zoning's single orientation reading, the turn-rate bound and the gate (the zoning
-  /// still names the zone); 0: P3's zoning.
+  /// the zoning's single orientation reading and the gate (the zoning still names the zone;
+  /// max_turn_rate and the facing check act on the hypotheses too); 0: P3's zoning.
   HeadingHypothesesParams heading;
 };
 
@@ -142,11 +142,14 @@ class LegPoseEstimator {
   bool multiHeading() const { return p_.heading.count > 0; }
   /// The pose filter's heading block (θ, θ̇, θ̈) set to the best hypothesis's.
   void takeBestHeading();
+  /// The hypotheses (one) and the walk filter started from the pose filter's state.
+  void startHeadings();
   /// update()'s measurement step, `k` the noise factor (inferred legs), `observable` whether
   /// the legs gave an orientation; returns the heading's innovation (for the facing check).
   double updateWithZoning(double k, bool& observable);  // P3's single reading
-  double updateWithHypotheses(const Eigen::Vector2d& legs_d, double k,
-                              bool& observable);  // heading_hypotheses.h
+  /// The same with the hypotheses (heading_hypotheses.h): `legs_d` the leg vector they read,
+  /// `inferred` whether one leg was hidden (a bound, not readings).
+  double updateWithHypotheses(const Eigen::Vector2d& legs_d, bool inferred, bool& observable);
 
   LegPoseParams p_;
   PoseConstantAcceleration model_;
