@@ -21,6 +21,13 @@ double angleDensity(double a, double mu, double sigma) {
 // else): this share of scans, explained by any heading alike.
 constexpr double kClutterShare = 0.05;
 
+void sortByWeight(std::vector<HeadingHypotheses::Hypothesis>& h) {
+  std::sort(h.begin(), h.end(),
+            [](const HeadingHypotheses::Hypothesis& a, const HeadingHypotheses::Hypothesis& b) {
+              return a.log_w > b.log_w;
+            });
+}
+
 double logSumExp(double a, double b) {
   const double m = std::max(a, b);
   return m + std::log(std::exp(a - m) + std::exp(b - m));
@@ -86,8 +93,7 @@ void HeadingHypotheses::start(const Eigen::Vector3d& x, const Eigen::Matrix3d& P
 
 void HeadingHypotheses::start(std::vector<Hypothesis> hypotheses) {
   h_ = std::move(hypotheses);
-  std::sort(h_.begin(), h_.end(),
-            [](const Hypothesis& a, const Hypothesis& b) { return a.log_w > b.log_w; });
+  sortByWeight(h_);
 }
 
 void HeadingHypotheses::predict(double dt, double var_a, double max_rate, bool coast) {
@@ -207,8 +213,7 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
       }
     }
   }
-  std::sort(children.begin(), children.end(),
-            [](const Hypothesis& a, const Hypothesis& b) { return a.log_w > b.log_w; });
+  sortByWeight(children);
   h_.clear();
   const double best = children.front().log_w;
   for (Hypothesis& c : children) {
@@ -226,8 +231,7 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
     if (int(h_.size()) >= std::max(1, p_.count)) continue;
     h_.push_back(c);
   }
-  std::sort(h_.begin(), h_.end(),
-            [](const Hypothesis& a, const Hypothesis& b) { return a.log_w > b.log_w; });
+  sortByWeight(h_);
   const double top = h_.front().log_w;
   for (Hypothesis& k : h_) k.log_w -= top;
 }

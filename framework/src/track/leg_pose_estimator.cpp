@@ -155,22 +155,20 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
     right_ = right.p;
     hidden_right_ = 0;
   }
-  // The hypotheses' leg vector: with a leg hidden, eq. 6's point alone (W₀ behind the visible
-  // leg, away from the scanner). Eq. 7's blend leans on the predicted leg, which follows the
-  // predicted heading: read back as an orientation, it would confirm whatever turn the
-  // heading was predicted to make.
-  Eigen::Vector2d legs_d = Eigen::Vector2d::Zero();
   if (!right.seen) {
     right_ = p_.occlusion ? hiddenLeg(sensor, left_, pred_right_, w0_, hidden_right_) : pred_right_;
-    legs_d = left_ - (p_.occlusion ? hiddenLeg(sensor, left_, pred_right_, w0_, INFINITY) : right_);
     inferred = true;
   } else if (!left.seen) {
     left_ = p_.occlusion ? hiddenLeg(sensor, right_, pred_left_, w0_, hidden_left_) : pred_left_;
-    legs_d = (p_.occlusion ? hiddenLeg(sensor, right_, pred_left_, w0_, INFINITY) : left_) - right_;
     inferred = true;
-  } else {
-    legs_d = left_ - right_;
   }
+  // The hypotheses' leg vector. With a leg hidden only its direction counts (a bound): the
+  // scanner's ray through the visible leg, on which eq. 6's point lies W₀ further out. Eq. 7's
+  // blend leans on the predicted leg, which follows the predicted heading: read back as an
+  // orientation, it would confirm whatever turn the heading was predicted to make.
+  const Eigen::Vector2d legs_d = !right.seen ? Eigen::Vector2d(sensor - left_)
+                                             : (!left.seen ? Eigen::Vector2d(right_ - sensor)
+                                                           : Eigen::Vector2d(left_ - right_));
   const double k = inferred ? p_.inferred_sigma_scale : 1.0;
   bool observable = false;
   const double innovation = multiHeading() ? updateWithHypotheses(legs_d, inferred, observable)
