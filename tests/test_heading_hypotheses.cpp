@@ -76,6 +76,10 @@ TEST_CASE("a leg vector allows two gait branches, a side step, and their mirror 
       legHeadingReadings(rotated(theta, L, W), W, sigma_leg, 0.0);
   REQUIRE(rs.size() == 6);
   const double other = theta - 2 * std::atan(L / W), side = theta - std::atan(L / W);
+  for (const HeadingReading& r : rs)  // −d's readings (left and right exchanged): mirrored
+    CHECK(r.mirrored ==
+          (angleDiff(r.yaw, theta + M_PI) < 1e-9 || angleDiff(r.yaw, other + M_PI) < 1e-9 ||
+           angleDiff(r.yaw, side + M_PI) < 1e-9));
   for (double flip : {0.0, M_PI}) {
     CHECK(hasReading(rs, std::remainder(theta + flip, 2 * M_PI), false));
     CHECK(hasReading(rs, std::remainder(other + flip, 2 * M_PI), false));
@@ -96,26 +100,29 @@ TEST_CASE("a leg vector allows two gait branches, a side step, and their mirror 
 }
 
 TEST_CASE("a hidden leg bounds the heading to the ray's perpendicular, either way", "[heading]") {
-  const std::vector<HeadingReading> b = hiddenLegHeadingBound({0.0, -0.18}, 1.0, 0.1);
+  const std::vector<HeadingReading> b = hiddenLegHeadingBound({0.0, 0.18}, 1.0, 0.1);
   REQUIRE(b.size() == 2);
-  CHECK(angleDiff(b[0].yaw, -M_PI) < 1e-9);  // d along −y: perpendicular ∓ x
-  CHECK(angleDiff(b[1].yaw, 0.0) < 1e-9);
+  CHECK(angleDiff(b[0].yaw, 0.0) < 1e-9);  // d along +y: perpendicular ± x
+  CHECK_FALSE(b[0].mirrored);
+  CHECK(angleDiff(b[1].yaw, M_PI) < 1e-9);  // the same with left and right exchanged
+  CHECK(b[1].mirrored);
   CHECK(b[0].spread == 1.0);
   // A hypothesis outside the bound loses weight against one inside it; neither moves. Both
   // start at weight 0: 0.2 rad (inside ±0.5 of 0) and 1.2 rad (0.7 outside). Inside, the bound
-  // child (log 0.95) absorbs the all-clutter one (log 0.05/2π); outside, the bound child falls
-  // by ½(0.7 / 0.1)² = 24.5 nats and the all-clutter explanation is what is left.
+  // child (log 0.95, times 1 − label_swap for the names kept) absorbs the all-clutter one (log
+  // 0.05/2π); outside, the bound child falls by ½(0.7 / 0.1)² = 24.5 nats and the all-clutter
+  // explanation is what is left.
   HeadingHypothesesParams p;
   p.stop_turn_prior = p.start_turn_prior = 0;
   const Eigen::Matrix3d P = Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal();
   HeadingHypotheses h(p);
   h.start({{Eigen::Vector3d(0.2, 0, 0), P}, {Eigen::Vector3d(1.2, 0, 0), P}});
-  h.update(hiddenLegHeadingBound({0.0, -0.18}, 0.5, 0.1), {0, 0}, 0.1, 0.1, 0);
+  h.update(hiddenLegHeadingBound({0.0, 0.18}, 0.5, 0.1), {0, 0}, 0.1, 0.1, 0);
   REQUIRE(h.all().size() == 2);
   CHECK(h.all()[0].x(0) == Approx(0.2));
   CHECK(h.all()[1].x(0) == Approx(1.2));
-  const double clutter = 0.05 / (2 * M_PI);
-  CHECK(h.all()[1].log_w == Approx(std::log(clutter) - std::log(0.95 + clutter)).margin(1e-3));
+  const double clutter = 0.05 / (2 * M_PI), bound = 0.95 * (1 - p.label_swap);
+  CHECK(h.all()[1].log_w == Approx(std::log(clutter) - std::log(bound + clutter)).margin(1e-3));
 }
 
 TEST_CASE("unseen, the turn rate's variance stays within rate_sigma_max", "[heading]") {
@@ -223,4 +230,28 @@ TEST_CASE("hypotheses switched on mid-track start from the pose filter's heading
   const auto [l, r] = legs(2.1);
   est.update({true, l}, {true, r}, {4, 0});
   CHECK(angleDiff(est.yaw(), M_PI / 2) < 10 * M_PI / 180);
+}
+
+TEST_CASE("reading the legs' names the other way round costs label_swap", "[heading]") {
+  // One hypothesis at 0 (names as they are), two readings 0.3 rad either side with the same
+  // spread, the one at −0.3 read from −d: both children move halfway (P = σ²), and the
+  // renaming one is log((1 − label_swap) / label_swap) behind; it is the swapped one.
+  HeadingHypothesesParams p;
+  p.stop_turn_prior = p.start_turn_prior = 0;
+  HeadingHypotheses h(p);
+  h.start({0, 0, 0}, Eigen::Vector3d(0.01, 1e-4, 1e-4).asDiagonal());
+  HeadingReading same{0.3, 0.1, false}, renamed{-0.3, 0.1, false};
+  renamed.mirrored = true;
+  h.update({same, renamed}, {0, 0}, 0.1, 0.1, 0);
+  REQUIRE(h.all().size() >= 2);
+  CHECK(h.all()[0].x(0) == Approx(0.15));
+  CHECK_FALSE(h.all()[0].swapped);
+  CHECK(h.all()[1].x(0) == Approx(-0.15));
+  CHECK(h.all()[1].swapped);
+  CHECK(h.all()[1].log_w == Approx(std::log(p.label_swap / (1 - p.label_swap))));
+  // A leg hidden or just seen again: label_swap_hidden instead.
+  HeadingHypotheses u(p);
+  u.start({0, 0, 0}, Eigen::Vector3d(0.01, 1e-4, 1e-4).asDiagonal());
+  u.update({same, renamed}, {0, 0}, 0.1, 0.1, 0, true);
+  CHECK(u.all()[1].log_w == Approx(std::log(p.label_swap_hidden / (1 - p.label_swap_hidden))));
 }

@@ -45,7 +45,7 @@ std::vector<HeadingReading> legHeadingReadings(const Eigen::Vector2d& d, double 
   const double s_dir = sd / rho;                 // the direction of d
   auto add = [&](double yaw, double sigma, bool sideways) {
     for (double flip : {0.0, M_PI})  // d, and −d (left and right the other way round)
-      out.push_back({wrapAngle(yaw + flip), std::max(sigma, floor), sideways});
+      out.push_back({wrapAngle(yaw + flip), std::max(sigma, floor), sideways, 0.0, flip != 0});
   };
   // d = R(θ)·(L, W₀), |L| = √(ρ² − W₀²): θ = β − atan2(W₀, ±|L|).
   const double L = std::sqrt(std::max(0.0, rho * rho - w0 * w0));
@@ -71,6 +71,7 @@ std::vector<HeadingReading> hiddenLegHeadingBound(const Eigen::Vector2d& d, doub
   HeadingReading r{wrapAngle(perp), softness, false, spread};
   HeadingReading mirror = r;
   mirror.yaw = wrapAngle(perp + M_PI);
+  mirror.mirrored = true;
   return {r, mirror};
 }
 
@@ -88,7 +89,7 @@ void HeadingHypotheses::capRateVariance(Eigen::Matrix3d& P) const {
 }
 
 void HeadingHypotheses::start(const Eigen::Vector3d& x, const Eigen::Matrix3d& P) {
-  h_.assign(1, Hypothesis{x, P, 0.0, false, 0.0});
+  h_.assign(1, Hypothesis{x, P, 0.0, false, false, 0.0});
 }
 
 void HeadingHypotheses::start(std::vector<Hypothesis> hypotheses) {
@@ -139,7 +140,7 @@ double HeadingHypotheses::motionLogLikelihood(double yaw, bool sideways, bool ba
 
 void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
                                const Eigen::Vector2d& velocity, double velocity_sigma, double dt,
-                               double max_rate) {
+                               double max_rate, bool names_uncertain) {
   const double speed = velocity.norm();
   const double spread = std::hypot(p_.motion_sigma, speed > 0 ? velocity_sigma / speed : 0.0);
   if (readings.empty() || h_.empty()) return;
@@ -150,6 +151,10 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
   const double log_stop = std::log(p_.stop_turn_prior), log_go = std::log(1 - p_.stop_turn_prior);
   const double log_switch = std::log(p_.mode_switch), log_stay = std::log(1 - p_.mode_switch);
   const bool moving = speed >= p_.motion_speed;
+  const double swap = names_uncertain ? p_.label_swap_hidden : p_.label_swap;
+  const bool names = swap > 0 && swap < 1;  // else the names are no evidence
+  const double log_rename = names ? std::log(swap) : 0.0;
+  const double log_same = names ? std::log(1 - swap) : 0.0;
   for (const Hypothesis& parent : h_) {
     // The parent as predicted; stopped turning (when it was turning at all); starting a turn
     // (the turn rate's variance opened: turns in place start within a step).
@@ -183,8 +188,11 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
         // Not the mirror image (readings come in pairs π apart): turning the facing round is
         // the motion's and the facing check's to decide, not a wide gate's.
         if (std::abs(nu) > M_PI / 2) continue;
+        const double log_names = r.mirrored != h.swapped ? log_rename : log_same;
         if (r.spread > 0) {
           Hypothesis c = h;
+          c.swapped = r.mirrored;
+          c.log_w += log_names;
           const double out = std::max(0.0, std::abs(nu) - r.spread) / std::max(r.sigma, 1e-3);
           c.innovation = 0;
           c.log_w += log_real - 0.5 * out * out +
@@ -195,6 +203,8 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
         const double S = h.P(0, 0) + r.sigma * r.sigma;
         if (nu * nu > p_.gate * p_.gate * S) continue;
         Hypothesis c = h;
+        c.swapped = r.mirrored;
+        c.log_w += log_names;
         const Eigen::Vector3d K = h.P.col(0) / S;
         c.x = h.x + K * nu;
         c.x(0) = wrapAngle(c.x(0));
@@ -220,7 +230,8 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
     if (c.log_w < best - p_.prune_log) break;
     bool merged = false;
     for (Hypothesis& k : h_) {
-      if (c.backward == k.backward && std::abs(wrapAngle(c.x(0) - k.x(0))) < p_.merge_angle &&
+      if (c.backward == k.backward && c.swapped == k.swapped &&
+          std::abs(wrapAngle(c.x(0) - k.x(0))) < p_.merge_angle &&
           std::abs(c.x(1) - k.x(1)) < 10 * p_.merge_angle) {
         k.log_w = logSumExp(k.log_w, c.log_w);  // the better's state, both's weight
         merged = true;
@@ -241,6 +252,7 @@ void HeadingHypotheses::turnAround() {
     h.x(0) = wrapAngle(h.x(0) + M_PI);
     h.x(1) = h.x(2) = 0;
     h.backward = !h.backward;  // the same motion, seen from the other facing
+    h.swapped = !h.swapped;    // and the legs' names with it
   }
 }
 

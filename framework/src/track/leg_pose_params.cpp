@@ -118,6 +118,11 @@ std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
       ParamSpec::real("heading_still_sideways", d.heading.still_sideways_prior, "", 1e-6, 1,
                       "hypotheses: likelihood factor of a side step read while the person is "
                       "slower than heading_motion_speed"),
+      ParamSpec::real("heading_label_swap", d.heading.label_swap, "", 0, 1,
+                      "hypotheses: chance per scan that the leg association exchanged left "
+                      "and right (0: the legs' names are no evidence)"),
+      ParamSpec::real("heading_label_swap_hidden", d.heading.label_swap_hidden, "", 0, 1,
+                      "hypotheses: the same on a scan with a leg hidden or just seen again"),
   };
 }
 
@@ -167,6 +172,8 @@ LegPoseParams readLegPoseParams(const ParamSet& s) {
   p.heading.walk_weight = s.getDouble("heading_walk_weight");
   p.heading.sideways_weight = s.getDouble("heading_sideways_weight");
   p.heading.still_sideways_prior = s.getDouble("heading_still_sideways");
+  p.heading.label_swap = s.getDouble("heading_label_swap");
+  p.heading.label_swap_hidden = s.getDouble("heading_label_swap_hidden");
   return p;
 }
 

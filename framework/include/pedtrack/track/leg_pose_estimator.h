@@ -149,7 +149,15 @@ class LegPoseEstimator {
   double updateWithZoning(double k, bool& observable);  // P3's single reading
   /// The same with the hypotheses (heading_hypotheses.h): `legs_d` the leg vector they read,
   /// `inferred` whether one leg was hidden (a bound, not readings).
-  double updateWithHypotheses(const Eigen::Vector2d& legs_d, bool inferred, bool& observable);
+  /// `left_is_a`: left_ is the hypotheses' leg A (nameLegs); `names_uncertain`: a leg hidden or
+  /// just seen again (HeadingHypothesesParams::label_swap_hidden).
+  double updateWithHypotheses(const Eigen::Vector2d& legs_d, bool inferred, bool left_is_a,
+                              bool names_uncertain, bool& observable);
+  /// left_ and right_ (and their hidden times) exchanged.
+  void swapNames();
+  /// Whether left_ is the hypotheses' leg A, from where A and B were last seen (both legs seen;
+  /// else the visible one and eq. 6's point behind it, `sensor` the scanner); updates those.
+  bool nameLegs(bool left_seen, bool right_seen, const Eigen::Vector2d& sensor);
 
   LegPoseParams p_;
   PoseConstantAcceleration model_;
@@ -161,6 +169,11 @@ class LegPoseEstimator {
   double hidden_left_ = 0, hidden_right_ = 0;  // T_o per leg, s
   bool legs_swapped_ = false;
   bool turned_round_ = false;
+  // The hypotheses' names for the legs, A and B, and where each was last seen: kept from scan
+  // to scan by nearest neighbour to those places, with no use of the heading (which the
+  // association to pred_left_ / pred_right_ makes), so that they are evidence for it
+  // (HeadingHypothesesParams::label_swap). A hidden leg's place stays where it was last seen.
+  Eigen::Vector2d leg_a_ = Eigen::Vector2d::Zero(), leg_b_ = Eigen::Vector2d::Zero();
   double dt_ = 0;             // the last prediction's step, s
   double facing_walked_ = 0;  // m, backward_walk_max's evidence
   double w0_ = 0;
