@@ -606,3 +606,30 @@ TEST_CASE("the motion heading pulls the heading towards the walk, not past 90 de
   INFO("backward walk: " << back_with << " deg with, " << back_without << " deg without");
   CHECK(std::abs(back_with - back_without) < 1e-9);
 }
+
+TEST_CASE("a leg standing where it was last seen is associated when the prediction ran ahead",
+          "[legs]") {
+  // A walker at 1.2 m/s stops dead at t = 1 s and the next scan comes 0.4 s later: the pose
+  // filter carries a leg on past the 0.4 m gate, while both stand where they were last seen.
+  LegPoseEstimator est(LegPoseParams{});
+  const Eigen::Vector2d sensor(-3, 0);
+  est.start(0, walkerLegs(0, 0, 1.2).first, walkerLegs(0, 0, 1.2).second, 0);
+  for (int k = 1; k <= 10; ++k) {
+    const double t = 0.1 * k;
+    est.predict(t);
+    const auto [l, r] = walkerLegs(t, 0, 1.2);
+    const std::vector<Eigen::Vector2d> cand{l, r};
+    const auto [li, ri] = est.associate(cand);
+    REQUIRE(li == 0);
+    REQUIRE(ri == 1);
+    est.update({true, l}, {true, r}, sensor);
+  }
+  const auto [l, r] = walkerLegs(1.0, 0, 1.2);
+  est.predict(1.4);
+  // The prediction alone would lose the left leg (and with it the pair: one leg only).
+  REQUIRE((est.predictedLeft() - l).norm() > LegPoseParams{}.leg_gate);
+  const std::vector<Eigen::Vector2d> cand{r, l};
+  const auto [li, ri] = est.associate(cand);
+  CHECK(li == 1);
+  CHECK(ri == 0);
+}

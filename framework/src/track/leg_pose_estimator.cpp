@@ -9,6 +9,7 @@ namespace pedtrack::track {
 namespace {
 
 constexpr double kMaxCoastSpeed = 2.0;  // m/s
+constexpr double kSeenRecently = 0.5;   // s, a leg's last sighting still counts in associate()
 
 Eigen::Vector2d rotate(double yaw, const Eigen::Vector2d& v) {
   const double c = std::cos(yaw), s = std::sin(yaw);
@@ -58,8 +59,8 @@ void LegPoseEstimator::start(double t, const Eigen::Vector2d& a, const Eigen::Ve
   body_d_ = rotate(-yaw, left_ - right_);
   if (multiHeading()) startHeadings();
   started_ = true;
-  pred_left_ = left_;
-  pred_right_ = right_;
+  pred_left_ = seen_left_ = left_;
+  pred_right_ = seen_right_ = right_;
 }
 
 void LegPoseEstimator::predict(double t) {
@@ -103,15 +104,20 @@ void LegPoseEstimator::predict(double t) {
 
 std::pair<int, int> LegPoseEstimator::associate(const std::vector<Eigen::Vector2d>& cand) const {
   const double gate2 = p_.leg_gate * p_.leg_gate;
+  auto dist2 = [&](const Eigen::Vector2d& c, const Eigen::Vector2d& pred,
+                   const Eigen::Vector2d& seen, double hidden) {
+    const double dp = (c - pred).squaredNorm();
+    return hidden < kSeenRecently ? std::min(dp, (c - seen).squaredNorm()) : dp;
+  };
   std::pair<int, int> best{-1, -1};
   double best_cost = INFINITY;
   const int n = int(cand.size());
   for (int i = 0; i < n; ++i) {
-    const double dl = (cand[i] - pred_left_).squaredNorm();
+    const double dl = dist2(cand[i], pred_left_, seen_left_, hidden_left_);
     if (dl > gate2) continue;
     for (int j = 0; j < n; ++j) {
       if (j == i) continue;
-      const double dr = (cand[j] - pred_right_).squaredNorm();
+      const double dr = dist2(cand[j], pred_right_, seen_right_, hidden_right_);
       if (dr > gate2 || dl + dr >= best_cost) continue;
       best_cost = dl + dr;
       best = {i, j};
@@ -119,8 +125,8 @@ std::pair<int, int> LegPoseEstimator::associate(const std::vector<Eigen::Vector2
   }
   if (best.first >= 0) return best;
   for (int i = 0; i < n; ++i) {
-    const double dl = (cand[i] - pred_left_).squaredNorm();
-    const double dr = (cand[i] - pred_right_).squaredNorm();
+    const double dl = dist2(cand[i], pred_left_, seen_left_, hidden_left_);
+    const double dr = dist2(cand[i], pred_right_, seen_right_, hidden_right_);
     const double d = std::min(dl, dr);
     if (d > gate2 || d >= best_cost) continue;
     best_cost = d;
@@ -147,16 +153,18 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
   turned_round_ = false;
   if (!left.seen && !right.seen) return;  // coast on the prediction
   bool inferred = false;
-  // A leg hidden, or seen again after a scan or more hidden: the legs' names (nameLegs) rest
-  // on eq. 6's point or on a place seen scans ago, not on two legs seen scan after scan.
+  // A leg hidden this scan after being seen, or seen again after a scan or more hidden: its
+  // name rests on eq. 6's point or on a place seen scans ago. (Through an occlusion the visible
+  // leg keeps its name scan after scan.)
+  auto changed = [&](bool seen, double hidden) { return seen == (hidden > 1.5 * dt_); };
   const bool names_uncertain =
-      !left.seen || !right.seen || (dt_ > 0 && std::max(hidden_left_, hidden_right_) > 1.5 * dt_);
+      changed(left.seen, hidden_left_) || changed(right.seen, hidden_right_);
   if (left.seen) {
-    left_ = left.p;
+    left_ = seen_left_ = left.p;
     hidden_left_ = 0;
   }
   if (right.seen) {
-    right_ = right.p;
+    right_ = seen_right_ = right.p;
     hidden_right_ = 0;
   }
   if (!right.seen) {
@@ -232,6 +240,7 @@ double LegPoseEstimator::updateWithZoning(double k, bool& observable) {
 
 void LegPoseEstimator::swapNames() {
   std::swap(left_, right_);
+  std::swap(seen_left_, seen_right_);
   std::swap(hidden_left_, hidden_right_);
   legs_swapped_ = true;
 }

@@ -97,6 +97,9 @@ class LegPoseEstimator {
   /// Nearest-neighbour labelling (P3 §2.5) of candidate leg positions to the predicted legs:
   /// the pair (i → left, j → right) with the least summed squared distance, both within
   /// leg_gate; else the single nearest within the gate. Indices into `candidates`, -1 for none.
+  /// A leg's distance is to its predicted place or, when nearer, to where it was last seen (in
+  /// the last half second; ours): a standing leg stays where it was when the gait model or a
+  /// wrong heading sends the prediction ahead, and would otherwise fall out of the gate.
   std::pair<int, int> associate(const std::vector<Eigen::Vector2d>& candidates) const;
 
   /// The update with this scan's labelled legs (either may be missing); `sensor` is the
@@ -184,6 +187,7 @@ class LegPoseEstimator {
   std::vector<gait::Sample> samples_;                 // newest first
   gait::Params gait_;
   Eigen::Vector2d pred_left_, pred_right_, left_, right_;
+  Eigen::Vector2d seen_left_ = Eigen::Vector2d::Zero(), seen_right_ = Eigen::Vector2d::Zero();
   HeadingHypotheses headings_;
   // The hypotheses' motion evidence: a walker's constant-velocity filter on the legs'
   // midpoint. P3's pose filter (σ_a = 10 m/s²) follows every leg fit, and its velocity reads
