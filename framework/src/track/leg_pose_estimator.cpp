@@ -11,6 +11,14 @@ namespace {
 constexpr double kMaxCoastSpeed = 2.0;  // m/s
 constexpr double kSeenRecently = 0.5;   // s, a leg's last sighting still counts in associate()
 
+// Eq. 6: the point W₀ behind `visible` on the scanner's ray (`visible` itself at the scanner).
+Eigen::Vector2d behindOnRay(const Eigen::Vector2d& sensor, const Eigen::Vector2d& visible,
+                            double w0) {
+  const Eigen::Vector2d sl = visible - sensor;
+  const double n = sl.norm();
+  return n < 1e-9 ? visible : Eigen::Vector2d(sensor + (w0 / n + 1) * sl);
+}
+
 Eigen::Vector2d rotate(double yaw, const Eigen::Vector2d& v) {
   const double c = std::cos(yaw), s = std::sin(yaw);
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
@@ -139,12 +147,10 @@ Eigen::Vector2d LegPoseEstimator::hiddenLeg(const Eigen::Vector2d& sensor,
                                             const Eigen::Vector2d& visible,
                                             const Eigen::Vector2d& predicted, double w0,
                                             double hidden_for) {
-  const Eigen::Vector2d sl = visible - sensor;
-  const double n = sl.norm();
-  if (n < 1e-9) return predicted;
-  const Eigen::Vector2d ro = sensor + (w0 / n + 1) * sl;  // eq. 6
-  const double alpha = std::exp(-hidden_for);             // α = 1 / e^{T_o}
-  return alpha * predicted + (1 - alpha) * ro;            // eq. 7
+  if ((visible - sensor).norm() < 1e-9) return predicted;
+  const Eigen::Vector2d ro = behindOnRay(sensor, visible, w0);  // eq. 6
+  const double alpha = std::exp(-hidden_for);                   // α = 1 / e^{T_o}
+  return alpha * predicted + (1 - alpha) * ro;                  // eq. 7
 }
 
 void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
@@ -254,9 +260,7 @@ bool LegPoseEstimator::nameLegs(bool left_seen, bool right_seen, const Eigen::Ve
     // The visible leg and eq. 6's point W₀ behind it on the scanner's ray (no heading in it):
     // the pair, not the visible leg alone, which mid-swing may be nearer the other's last place.
     const Eigen::Vector2d& v = left_seen ? left_ : right_;
-    const Eigen::Vector2d ray = v - sensor;
-    const double n = ray.norm();
-    const Eigen::Vector2d h = n > 1e-9 ? Eigen::Vector2d(v + w0_ / n * ray) : v;
+    const Eigen::Vector2d h = behindOnRay(sensor, v, w0_);
     const bool v_is_a = (v - leg_a_).squaredNorm() + (h - leg_b_).squaredNorm() <=
                         (v - leg_b_).squaredNorm() + (h - leg_a_).squaredNorm();
     left_is_a = left_seen == v_is_a;

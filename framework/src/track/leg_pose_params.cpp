@@ -119,10 +119,11 @@ std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
                       "hypotheses: likelihood factor of a side step read while the person is "
                       "slower than heading_motion_speed"),
       ParamSpec::real("heading_label_swap", d.heading.label_swap, "", 0, 1,
-                      "hypotheses: chance per scan that the leg association exchanged left "
-                      "and right (0: the legs' names are no evidence)"),
+                      "hypotheses: chance per scan that the legs' names (kept by nearest "
+                      "neighbour to where each leg was last seen) were exchanged; 0 or 1: the "
+                      "names are no evidence"),
       ParamSpec::real("heading_label_swap_hidden", d.heading.label_swap_hidden, "", 0, 1,
-                      "hypotheses: the same on a scan with a leg hidden or just seen again"),
+                      "hypotheses: the same on a scan where a leg goes hidden or comes back"),
   };
 }
 

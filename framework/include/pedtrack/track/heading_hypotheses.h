@@ -69,8 +69,8 @@ struct HeadingHypothesesParams {
   /// `HeadingReading::mirrored`). The names are kept from scan to scan without the heading
   /// (LegPoseEstimator: nearest neighbour to where each leg was last seen), so left and right
   /// are evidence too: a turn in place of α reads, leg for leg, like one of π − α the other way,
-  /// but only with the names exchanged. label_swap_hidden instead on a scan with a leg hidden or
-  /// just seen again (a name then rests on eq. 6's point or on where the leg was seen scans
+  /// but only with the names exchanged. label_swap_hidden instead on a scan where a leg goes hidden
+  /// or comes back (a name then rests on eq. 6's point or on where the leg was seen scans
   /// ago). 0 or 1: the names are no evidence. Both are set weaker than the naming's own error
   /// rate (~1 % of the scans with both legs seen, P3 scenario 4 against the simulator's legs): a
   /// hypothesis that lost the facing in a fast turn must be able to come back.
@@ -134,7 +134,7 @@ class HeadingHypotheses {
   /// No readings: the hypotheses stay as predicted.
   /// `velocity_sigma` (m/s) its standard deviation: the motion's direction is then uncertain
   /// by about velocity_sigma / speed on top of motion_sigma.
-  /// `names_uncertain`: a leg hidden or just seen again (label_swap_hidden).
+  /// `names_uncertain`: a leg goes hidden or comes back this scan (label_swap_hidden).
   void update(const std::vector<HeadingReading>& readings, const Eigen::Vector2d& velocity,
               double velocity_sigma, double dt, double max_rate, bool names_uncertain = false);
   /// Every hypothesis turned round by π (the facing check), rate and acceleration cleared, the

@@ -152,8 +152,8 @@ class LegPoseEstimator {
   double updateWithZoning(double k, bool& observable);  // P3's single reading
   /// The same with the hypotheses (heading_hypotheses.h): `legs_d` the leg vector they read,
   /// `inferred` whether one leg was hidden (a bound, not readings).
-  /// `left_is_a`: left_ is the hypotheses' leg A (nameLegs); `names_uncertain`: a leg hidden or
-  /// just seen again (HeadingHypothesesParams::label_swap_hidden).
+  /// `left_is_a`: left_ is the hypotheses' leg A (nameLegs); `names_uncertain`: a leg goes hidden
+  /// or comes back (HeadingHypothesesParams::label_swap_hidden).
   double updateWithHypotheses(const Eigen::Vector2d& legs_d, bool inferred, bool left_is_a,
                               bool names_uncertain, bool& observable);
   /// left_ and right_ (and their hidden times) exchanged.
