@@ -189,6 +189,32 @@ TEST_CASE("legs the classifier scores low are confirmed only after moving_confir
   CHECK(first_confirmed_x - started_x < 0.85);
 }
 
+TEST_CASE("legs the classifier is sure of are confirmed after sure_confirm_travel", "[legs]") {
+  // A person shuffling at 0.3 m/s, legs scissoring; the distance walked from the pair's start
+  // when they are first confirmed.
+  auto confirmed_after = [](double score) {
+    LegPeopleParams p;  // confirm_travel 0.5 m; sure_leg_score 0.7, sure_confirm_travel 0.25 m
+    LegPeopleTracker tr(p);
+    double started_x = NAN;
+    for (int k = 0; k < 60; ++k) {
+      const double t = 0.1 * k, x = -1 + 0.3 * t, lp = 0.2 * std::sin(2 * M_PI * 0.9 * t);
+      std::vector<LegDetection> legs{{{x + lp / 2, 0.09}, score, {0, 0}, -1},
+                                     {{x - lp / 2, -0.09}, score, {0, 0}, -1}};
+      tr.step(t, legs, {});
+      for (const PersonState& s : tr.people()) {
+        if (std::isnan(started_x)) started_x = s.p.x();
+        if (s.confirmed) return s.p.x() - started_x;
+      }
+    }
+    return double(INFINITY);
+  };
+  const double sure = confirmed_after(0.9), likely = confirmed_after(0.5);
+  CHECK(sure >= 0.25);
+  CHECK(sure < 0.4);
+  CHECK(likely >= 0.5);
+  CHECK(likely < 0.65);
+}
+
 TEST_CASE("a pair that slides along without scissoring is not confirmed (confirm_stride)",
           "[legs]") {
   // Two leg-like objects 0.18 m apart gliding at 1 m/s for 3 s, as a wall segment does when the

@@ -204,11 +204,16 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     }
     const bool strode = p_.confirm_stride <= 0 || P.stride_max - P.stride_min >= p_.confirm_stride;
     // Nor is a person confirmed while faster than a brisk walk: that speed is, far more often
-    // than a runner, the filter reacting to a leg that jumped to a neighbouring object.
-    if (!P.confirmed && P.seen && strode && P.travelled >= p_.confirm_travel &&
+    // than a runner, the filter reacting to a leg that jumped to a neighbouring object. Legs the
+    // classifier is sure of need less travel: a person standing by the robot, shifting their
+    // weight, is a person before they walk off.
+    const double score = P.score_sum / std::max(1, P.score_n);
+    const double travel = score >= p_.sure_leg_score
+                              ? std::min(p_.sure_confirm_travel, p_.confirm_travel)
+                              : p_.confirm_travel;
+    if (!P.confirmed && P.seen && strode && P.travelled >= travel &&
         v.norm() <= p_.max_confirm_speed &&
-        (P.score_sum / std::max(1, P.score_n) >= p_.leg_score ||
-         P.travelled >= p_.moving_confirm_travel)) {
+        (score >= p_.leg_score || P.travelled >= p_.moving_confirm_travel)) {
       P.confirmed = true;
       // From now on the walker's own (smoother) noise: see legPeoplePoseDefaults().
       P.est.retune(p_.pose);

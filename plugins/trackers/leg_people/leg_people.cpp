@@ -34,6 +34,8 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.moving_leg_score = s.getDouble("moving_leg_score");
   p.moving_confirm_travel = s.getDouble("moving_confirm_travel");
   p.max_confirm_speed = s.getDouble("max_confirm_speed");
+  p.sure_leg_score = s.getDouble("sure_leg_score");
+  p.sure_confirm_travel = s.getDouble("sure_confirm_travel");
   p.pair_distance = s.getDouble("pair_distance");
   p.confirm_travel = s.getDouble("confirm_travel");
   p.confirm_stride = s.getDouble("confirm_stride");
@@ -266,6 +268,12 @@ PluginDescriptor describe() {
       ParamSpec::real("moving_confirm_travel", def.moving_confirm_travel, "m", 0, 100,
                       "a person whose legs' mean score is below leg_score is confirmed once it "
                       "moved this far"),
+      ParamSpec::real("sure_leg_score", def.sure_leg_score, "", 0, 1,
+                      "a person whose legs' mean classifier score reaches this is confirmed after "
+                      "sure_confirm_travel instead of confirm_travel (a person standing by the "
+                      "robot, shifting their weight); 1: off"),
+      ParamSpec::real("sure_confirm_travel", def.sure_confirm_travel, "m", 0, 100,
+                      "see sure_leg_score (legs must still have scissored: confirm_stride)"),
       ParamSpec::real("max_confirm_speed", def.max_confirm_speed, "m/s", 0, 100,
                       "no person is confirmed while estimated faster than this (a brisk walk): "
                       "such speeds are mostly a leg jumping to a neighbouring object"),
