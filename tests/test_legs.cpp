@@ -359,6 +359,40 @@ TEST_CASE("a confirmed walker lost behind others keeps their id when their legs 
   CHECK(after_off == 0);
 }
 
+TEST_CASE("a confirmed person is kept lost for as long as they were tracked (max_coast_confirmed)",
+          "[legs]") {
+  // Walks along +x at 0.8 m/s for `walk` s, is hidden for 6 s (beyond max_coast, 3 s), and
+  // reappears 0.5 m on from where they vanished. Tracked for ~9 s they are still kept and take
+  // the new pair back; tracked for ~1 s they were deleted, and the pair is a new person.
+  auto run = [](double walk) {
+    LegPeopleTracker tr(LegPeopleParams{});  // max_coast 3 s, max_coast_confirmed 20 s
+    const Eigen::Vector2d sensor(0, -5);
+    long before = 0, after = 0;
+    double x = -4, t = 0;
+    auto legs = [&](double t, double x) {
+      const double lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      return std::vector<LegDetection>{{{x + lp / 2, 0.09}, 0.9, sensor, -1},
+                                       {{x - lp / 2, -0.09}, 0.9, sensor, -1}};
+    };
+    for (; t <= walk; t += 0.1, x += 0.08) tr.step(t, legs(t, x), {});
+    for (const PersonState& s : tr.people())
+      if (s.confirmed) before = s.id;
+    const double hidden_until = t + 6;
+    for (; t < hidden_until; t += 0.1) tr.step(t, {}, {});
+    x += 0.5;
+    for (int k = 0; k < 3; ++k, t += 0.1, x += 0.08) tr.step(t, legs(t, x), {});
+    for (const PersonState& s : tr.people())
+      if (s.confirmed && s.seen) after = s.id;
+    return std::make_pair(before, after);
+  };
+  const auto [before, after] = run(10);
+  REQUIRE(before > 0);
+  CHECK(after == before);
+  const auto [before_short, after_short] = run(1.5);
+  REQUIRE(before_short > 0);
+  CHECK(after_short == 0);
+}
+
 TEST_CASE("a confirmed walker still holding coasting legs takes back a new pair formed nearby",
           "[legs]") {
   // Walks along +x for 2 s (confirmed), is hidden for 0.3 s, and reappears slowed down and

@@ -30,7 +30,7 @@ struct LegPeopleTracker::Person {
   Eigen::Vector2d origin;
   // Position and velocity when a leg was last seen.
   Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
-  double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
+  double travelled = 0, last_seen = 0, backwards = 0, last_step = 0, confirmed_at = 0;
   // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
   double stride_min = INFINITY, stride_max = -INFINITY;
   double score_sum = 0;
@@ -124,6 +124,16 @@ void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs
   }
 }
 
+// How long a person with no leg seen is kept. A confirmed person lost in a crowd or out of the
+// scanner's view comes back most often where re-identification (lostPersonNear) finds them, and
+// then needs no second confirmation; the longer they were tracked, the surer they are a person
+// worth waiting for. A track confirmed on clutter lives briefly, so it is dropped soon.
+double LegPeopleTracker::coastLimit(const Person& q) const {
+  if (!q.confirmed) return p_.max_coast;
+  return std::clamp(q.last_seen - q.confirmed_at, p_.max_coast,
+                    std::max(p_.max_coast, p_.max_coast_confirmed));
+}
+
 void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& legs,
                                     const std::function<bool(double, double)>& is_static) {
   // Legs' object ids that no longer exist are freed.
@@ -215,6 +225,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
         v.norm() <= p_.max_confirm_speed &&
         (score >= p_.leg_score || P.travelled >= p_.moving_confirm_travel)) {
       P.confirmed = true;
+      P.confirmed_at = t;
       // From now on the walker's own (smoother) noise: see legPeoplePoseDefaults().
       P.est.retune(p_.pose);
     }
@@ -262,13 +273,13 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       }
   // Deleted people free their legs.
   for (auto& person : people_) {
-    if (t - person->last_seen <= p_.max_coast) continue;
+    if (t - person->last_seen <= coastLimit(*person)) continue;
     for (auto& o : objects_)
       if (o->person == person->id) o->person = -1;
   }
   people_.erase(std::remove_if(people_.begin(), people_.end(),
                                [&](const std::unique_ptr<Person>& q) {
-                                 return t - q->last_seen > p_.max_coast;
+                                 return t - q->last_seen > coastLimit(*q);
                                }),
                 people_.end());
 }
@@ -391,6 +402,9 @@ std::vector<PersonState> LegPeopleTracker::people() const {
 std::vector<Eigen::Vector2d> LegPeopleTracker::occupiedByPeople() const {
   std::vector<Eigen::Vector2d> out;
   for (const auto& q : people_) {
+    // A person lost for longer than max_coast no longer keeps the grid out of where they were
+    // last predicted (a chair put there meanwhile must become static scene).
+    if (t_ - q->last_seen > p_.max_coast) continue;
     // Tentative people are not kept out: a pair of table legs taken for a person at start-up
     // must still become static scene, which then deletes it (see updatePeople).
     if (!q->confirmed) continue;

@@ -40,6 +40,7 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.confirm_travel = s.getDouble("confirm_travel");
   p.confirm_stride = s.getDouble("confirm_stride");
   p.max_coast = s.getDouble("max_coast");
+  p.max_coast_confirmed = s.getDouble("max_coast_confirmed");
   p.reacquire_spread = s.getDouble("reacquire_spread");
   p.reacquire_max = s.getDouble("reacquire_max");
   p.merge_distance = s.getDouble("merge_distance");
@@ -286,7 +287,13 @@ PluginDescriptor describe() {
                       "over this range (two objects slid together by the robot's motion never "
                       "do); 0: off"),
       ParamSpec::real("max_coast", def.max_coast, "s", 0, 3600,
-                      "a person with neither leg seen this long is deleted"),
+                      "a tentative person with neither leg seen this long is deleted, and a "
+                      "confirmed one at the earliest"),
+      ParamSpec::real("max_coast_confirmed", def.max_coast_confirmed, "s", 0, 3600,
+                      "a confirmed person with neither leg seen is deleted after as long as they "
+                      "had been tracked since confirmation, at most this (at least max_coast): "
+                      "a person back from behind others or from outside the view is "
+                      "re-identified (reidentify_speed) without a second confirmation"),
       ParamSpec::real("reacquire_spread", def.reacquire_spread, "m/s", 0, 100,
                       "while a confirmed person is unseen (occluded in a crowd), the gate in which "
                       "a free leg becomes theirs widens this fast"),
