@@ -165,7 +165,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       for (auto& o : objects_) {
         if (o->person >= 0 || o->det < 0) continue;
         const double d = (o->pos() - want).norm();
-        if (d >= bd || !legLike(*o)) continue;
+        // A confirmed person's gait predicts where their leg is: an object found there needs
+        // only the score a walking object needs (far legs have few points and score low).
+        const bool leg_enough =
+            legLike(*o) || (P.confirmed && o->meanScore() >= p_.moving_leg_score);
+        if (d >= bd || !leg_enough) continue;
         // A door jamb or table leg next to a passing person must not become their leg: once
         // adopted it would hold the track on the furniture after the person left.
         if (is_static && is_static(o->pos().x(), o->pos().y())) continue;

@@ -265,7 +265,8 @@ PluginDescriptor describe() {
                       "tracks whose mean classifier score reaches this are legs"),
       ParamSpec::real("moving_leg_score", def.moving_leg_score, "", 0, 1,
                       "a track moving at init_speed or more is leg-like from this mean score on "
-                      "(far legs score low but walk)"),
+                      "(far legs score low but walk), and so is one where a confirmed person's "
+                      "missing leg is predicted"),
       ParamSpec::real("moving_confirm_travel", def.moving_confirm_travel, "m", 0, 100,
                       "a person whose legs' mean score is below leg_score is confirmed once it "
                       "moved this far"),
