@@ -305,9 +305,12 @@ LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen
     const double radius =
         p_.pose.leg_gate + std::min(p_.reidentify_speed * (t - q->last_seen), p_.reidentify_max);
     const double unseen = t - q->last_seen;
+    // Walking on behind the people hiding them is plausible for a few seconds, not for the
+    // max_coast_confirmed a long-tracked person may be kept lost.
+    const double walked_on = std::min(unseen, p_.max_coast);
     const double d =
         std::min({(Eigen::Vector2d(q->est.x(), q->est.y()) - p).norm(), (q->seen_at - p).norm(),
-                  (q->seen_at + unseen * q->seen_v - p).norm()});
+                  (q->seen_at + walked_on * q->seen_v - p).norm()});
     if (d < radius && d < best_d) best = q.get(), best_d = d;
   }
   return best;

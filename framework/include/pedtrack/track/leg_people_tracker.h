@@ -75,7 +75,7 @@ struct LegPeopleParams {
   double leg_score = 0.25;
   /// A free object moving at init_speed or more is leg-like from this mean score on, and so is
   /// one where a confirmed person's missing leg is predicted: on the simulated crowds, whose far
-  /// legs score low, MOTA 0.819 -> 0.826 static, 0.803 -> 0.813 moving (seeds 11-34); on
+  /// legs score low, MOTA 0.819 -> 0.826 static, 0.803 -> 0.812 moving (seeds 11-34); on
   /// leg_tracker's positive_3 bag a track follows a person 13 scans further, past the labels.
   double moving_leg_score = 0.05;
   double pair_distance = 0.7;   ///< m, two legs at most this far apart form a person
