@@ -192,14 +192,14 @@ TEST_CASE("legs the classifier scores low are confirmed only after moving_confir
 TEST_CASE("legs the classifier is sure of are confirmed after sure_confirm_travel", "[legs]") {
   // A person shuffling at 0.3 m/s, legs scissoring; the distance walked from the pair's start
   // when they are first confirmed.
-  auto confirmed_after = [](double score) {
+  auto confirmed_after = [](double score, bool scored = true) {
     LegPeopleParams p;  // confirm_travel 0.5 m; sure_leg_score 0.7, sure_confirm_travel 0.25 m
     LegPeopleTracker tr(p);
     double started_x = NAN;
     for (int k = 0; k < 60; ++k) {
       const double t = 0.1 * k, x = -1 + 0.3 * t, lp = 0.2 * std::sin(2 * M_PI * 0.9 * t);
-      std::vector<LegDetection> legs{{{x + lp / 2, 0.09}, score, {0, 0}, -1},
-                                     {{x - lp / 2, -0.09}, score, {0, 0}, -1}};
+      std::vector<LegDetection> legs{{{x + lp / 2, 0.09}, score, {0, 0}, -1, scored},
+                                     {{x - lp / 2, -0.09}, score, {0, 0}, -1, scored}};
       tr.step(t, legs, {});
       for (const PersonState& s : tr.people()) {
         if (std::isnan(started_x)) started_x = s.p.x();
@@ -213,6 +213,8 @@ TEST_CASE("legs the classifier is sure of are confirmed after sure_confirm_trave
   CHECK(sure < 0.4);
   CHECK(likely >= 0.5);
   CHECK(likely < 0.65);
+  // No classifier ran: every leg scores 1, which says nothing; confirm_travel applies.
+  CHECK(confirmed_after(1.0, false) >= 0.5);
 }
 
 TEST_CASE("a pair that slides along without scissoring is not confirmed (confirm_stride)",
@@ -286,6 +288,35 @@ TEST_CASE("a confirmed person hidden for two seconds is re-acquired by one leg",
     for (const PersonState& s : tr.people()) back |= s.id == id && s.seen;
   }
   CHECK(back);
+}
+
+TEST_CASE("a person lost longer than max_coast takes back only a leg-like object", "[legs]") {
+  // Walks 8 s (confirmed, kept lost up to ~7 s), stops, is hidden 4 s (beyond max_coast, 3 s);
+  // then a still object appears where their leg was. Scored 0.9 it is a leg and theirs; scored
+  // 0.06 (moving_leg_score would do within max_coast) it is more likely a chair put there.
+  auto back = [](double score) {
+    LegPeopleTracker tr(LegPeopleParams{});
+    long id = 0;
+    double t = 0, x = -4;
+    for (; t < 8; t += 0.1) {
+      x = std::min(1.0, -4 + 0.8 * t);
+      const double lp = x < 1.0 ? 0.25 * std::sin(2 * M_PI * 0.9 * t) : 0.0;
+      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, {0, -5}, -1}, {{x - lp / 2, -0.09}, 0.9, {0, -5}, -1}},
+              {});
+    }
+    for (const PersonState& s : tr.people())
+      if (s.confirmed) id = s.id;
+    REQUIRE(id > 0);
+    for (const double until = t + 4; t < until; t += 0.1) tr.step(t, {}, {});
+    bool seen = false;
+    for (int k = 0; k < 5; ++k, t += 0.1) {
+      tr.step(t, {{{1.0, 0.09}, score, {0, -5}, -1}}, {});
+      for (const PersonState& s : tr.people()) seen |= s.id == id && s.seen;
+    }
+    return seen;
+  };
+  CHECK(back(0.9));
+  CHECK_FALSE(back(0.06));
 }
 
 TEST_CASE("with neither leg seen the velocity decays with coast_tau", "[legs]") {

@@ -30,7 +30,8 @@ struct LegPeopleTracker::Person {
   Eigen::Vector2d origin;
   // Position and velocity when a leg was last seen.
   Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
-  double travelled = 0, last_seen = 0, backwards = 0, last_step = 0, confirmed_at = 0;
+  double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
+  double tracked = 0;  // s seen while confirmed (coastLimit)
   // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
   double stride_min = INFINITY, stride_max = -INFINITY;
   double score_sum = 0;
@@ -65,6 +66,7 @@ LegPeopleTracker::~LegPeopleTracker() = default;
 
 void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
                             const std::function<bool(double, double)>& is_static) {
+  for (const LegDetection& l : legs) classified_ = classified_ || l.scored;
   const double dt = started_ ? std::clamp(t - t_, 0.0, 1.0) : 0.0;
   started_ = true;
   t_ = t;
@@ -126,12 +128,12 @@ void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs
 
 // How long a person with no leg seen is kept. A confirmed person lost in a crowd or out of the
 // scanner's view comes back most often where re-identification (lostPersonNear) finds them, and
-// then needs no second confirmation; the longer they were tracked, the surer they are a person
-// worth waiting for. A track confirmed on clutter lives briefly, so it is dropped soon.
+// then needs no second confirmation; the longer they were seen while confirmed (time lost does
+// not count), the surer they are a person worth waiting for. A track confirmed on clutter lives
+// briefly, so it is dropped soon.
 double LegPeopleTracker::coastLimit(const Person& q) const {
   if (!q.confirmed) return p_.max_coast;
-  return std::clamp(q.last_seen - q.confirmed_at, p_.max_coast,
-                    std::max(p_.max_coast, p_.max_coast_confirmed));
+  return std::clamp(q.tracked, p_.max_coast, std::max(p_.max_coast, p_.max_coast_confirmed));
 }
 
 void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& legs,
@@ -152,7 +154,8 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     P.last_step = t;
     if (lo && lo->det >= 0) l = {true, lo->pos()};
     if (ro && ro->det >= 0) r = {true, ro->pos()};
-    // A free leg-like object near the person's missing leg becomes that leg.
+    // A free leg-like object near the person's missing leg becomes that leg (for a confirmed
+    // person whose gait still predicts it, any object from moving_leg_score on: below).
     for (int side = 0; side < 2; ++side) {
       long& slot = side == 0 ? P.left : P.right;
       if (slot >= 0) continue;
@@ -166,9 +169,12 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
         if (o->person >= 0 || o->det < 0) continue;
         const double d = (o->pos() - want).norm();
         // A confirmed person's gait predicts where their leg is: an object found there needs
-        // only the score a walking object needs (far legs have few points and score low).
-        const bool leg_enough =
-            legLike(*o) || (P.confirmed && o->meanScore() >= p_.moving_leg_score);
+        // only the score a walking object needs (far legs have few points and score low). Not
+        // once they have been lost longer than max_coast: the prediction is then a guess, and a
+        // chair there would hold the track for good (confirmed people are never deleted on the
+        // static scene, and keep the grid from learning it).
+        const bool predicted = P.confirmed && (l.seen || r.seen || t - P.last_seen <= p_.max_coast);
+        const bool leg_enough = legLike(*o) || (predicted && o->meanScore() >= p_.moving_leg_score);
         if (d >= bd || !leg_enough) continue;
         // A door jamb or table leg next to a passing person must not become their leg: once
         // adopted it would hold the track on the furniture after the person left.
@@ -209,6 +215,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // re-associated to clutter) would otherwise confirm a ghost without any measurement.
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
     if (P.seen) P.seen_at = c, P.seen_v = P.est.velocity();
+    if (P.seen && P.confirmed) P.tracked += dt_person;
     // Gait evidence: the legs' separation along the direction of motion swings as they scissor.
     const Eigen::Vector2d v = P.est.velocity();
     if (!P.confirmed && l.seen && r.seen && v.norm() > kStrideMinSpeed) {
@@ -221,15 +228,15 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // than a runner, the filter reacting to a leg that jumped to a neighbouring object. Legs the
     // classifier is sure of need less travel: a person standing by the robot, shifting their
     // weight, is a person before they walk off.
+    // (Only where a classifier scored the legs: unscored legs all score 1.)
     const double score = P.score_sum / std::max(1, P.score_n);
-    const double travel = score >= p_.sure_leg_score
-                              ? std::min(p_.sure_confirm_travel, p_.confirm_travel)
-                              : p_.confirm_travel;
+    const bool sure = classified_ && p_.sure_leg_score < 1 && score >= p_.sure_leg_score;
+    const double travel =
+        sure ? std::min(p_.sure_confirm_travel, p_.confirm_travel) : p_.confirm_travel;
     if (!P.confirmed && P.seen && strode && P.travelled >= travel &&
         v.norm() <= p_.max_confirm_speed &&
         (score >= p_.leg_score || P.travelled >= p_.moving_confirm_travel)) {
       P.confirmed = true;
-      P.confirmed_at = t;
       // From now on the walker's own (smoother) noise: see legPeoplePoseDefaults().
       P.est.retune(p_.pose);
     }
@@ -268,6 +275,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
         if (a == b || a->last_seen == -INFINITY || b->last_seen == -INFINITY) continue;
         // A confirmed person coasting beside one seen is likely hidden by them, not a copy.
         if (a->confirmed && b->confirmed && !(a->seen && b->seen)) continue;
+        // One lost longer than max_coast is only kept for re-identification: where they were
+        // predicted says too little to delete someone seen there.
+        if ((a->confirmed && t - a->last_seen > p_.max_coast) ||
+            (b->confirmed && t - b->last_seen > p_.max_coast))
+          continue;
         if (std::hypot(a->est.x() - b->est.x(), a->est.y() - b->est.y()) >= p_.merge_distance)
           continue;
         Person* drop = a->confirmed != b->confirmed   ? (a->confirmed ? b : a).get()
@@ -291,7 +303,8 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
 // The confirmed person not seen this scan nearest to p, within leg_gate plus reidentify_speed
 // times their time unseen (at most reidentify_max) of where they were predicted (the velocity
 // decaying with coast_tau), where they were last seen (they stopped), or where their last
-// velocity would have carried them (they walked on behind the people hiding them); null if
+// velocity would have carried them in at most max_coast (they walked on behind the people
+// hiding them); null if
 // none. They may still hold coasting leg objects: a person whose prediction ran off (a turn
 // misread from a hidden leg sends it the wrong way at walking speed) loses their legs to a new
 // pair formed where they really are, and the track must follow it rather than coast out beside

@@ -63,7 +63,8 @@ class LegPeople : public Tracker {
         follow_(ctx.params.getString("follow")),
         follow_zone_(ctx.params.getVector("follow_zone")),
         static_radius_(ctx.params.getDouble("static_radius")),
-        report_coast_(ctx.params.getDouble("report_coast")) {
+        report_coast_(ctx.params.getDouble("report_coast")),
+        max_coast_(ctx.params.getDouble("max_coast")) {
     if (ctx.params.getBool("static_scene")) {
       StaticScene::Options o;
       o.persist = ctx.params.getDouble("static_persist");
@@ -142,6 +143,7 @@ class LegPeople : public Tracker {
       d.p = {x, y};
       auto it = score.find(int(i));
       d.score = it != score.end() ? it->second : (classified ? 0.0 : 1.0);
+      d.scored = classified;
       d.sensor = nearestSensor(f, d.p);
       d.cluster = int(i);
       out.push_back(d);
@@ -159,6 +161,7 @@ class LegPeople : public Tracker {
     // last scan, moved into this robot frame by the last pose, are left out of the match.
     std::vector<Eigen::Vector2d> people;
     for (const PersonState& s : tracker_.people()) {
+      if (s.unseen > max_coast_) continue;  // kept lost only for re-identification
       double x, y, z;
       last_robot_.inverseComposePoint(s.p.x(), s.p.y(), 0, x, y, z);
       people.emplace_back(x, y);
@@ -209,18 +212,23 @@ class LegPeople : public Tracker {
   void chooseFollowed(const Frame& f, const std::vector<PersonState>& people) {
     if (follow_ == "off") return;
     bool alive = false;
-    for (const auto& s : people) alive |= s.id == followed_ && s.confirmed;
+    // Only people still written count: one lost from sight is kept (max_coast_confirmed) for
+    // re-identification, not followed.
+    auto followable = [&](const PersonState& s) {
+      return s.confirmed && s.unseen <= report_coast_;
+    };
+    for (const auto& s : people) alive |= s.id == followed_ && followable(s);
     if (alive) return;
     followed_ = 0;
     if (follow_id_ > 0) {
       for (const auto& s : people)
-        if (s.id == follow_id_ && s.confirmed) followed_ = s.id;
+        if (s.id == follow_id_ && followable(s)) followed_ = s.id;
       return;
     }
     double best = INFINITY;
     const mrpt::poses::CPose3D inv = -f.robot_pose;
     for (const auto& s : people) {
-      if (!s.confirmed) continue;
+      if (!followable(s)) continue;
       double x, y, z;
       inv.composePoint(s.p.x(), s.p.y(), 0, x, y, z);
       if (x < follow_zone_[0] || x > follow_zone_[1] || std::abs(y) > follow_zone_[2]) continue;
@@ -244,6 +252,7 @@ class LegPeople : public Tracker {
   std::vector<double> follow_zone_;
   double static_radius_;
   double report_coast_;
+  double max_coast_;
   mutable bool classifier_seen_ = false;
 };
 
@@ -272,8 +281,9 @@ PluginDescriptor describe() {
                       "moved this far"),
       ParamSpec::real("sure_leg_score", def.sure_leg_score, "", 0, 1,
                       "a person whose legs' mean classifier score reaches this is confirmed after "
-                      "sure_confirm_travel instead of confirm_travel (a person standing by the "
-                      "robot, shifting their weight); 1: off"),
+                      "sure_confirm_travel (at most confirm_travel; a person standing by the "
+                      "robot, shifting their weight); only where a classifier scored the "
+                      "legs; 1: off"),
       ParamSpec::real("sure_confirm_travel", def.sure_confirm_travel, "m", 0, 100,
                       "see sure_leg_score (legs must still have scissored: confirm_stride)"),
       ParamSpec::real("max_confirm_speed", def.max_confirm_speed, "m/s", 0, 100,
@@ -292,7 +302,7 @@ PluginDescriptor describe() {
                       "confirmed one at the earliest"),
       ParamSpec::real("max_coast_confirmed", def.max_coast_confirmed, "s", 0, 3600,
                       "a confirmed person with neither leg seen is deleted after as long as they "
-                      "had been tracked since confirmation, at most this (at least max_coast): "
+                      "had been seen while confirmed, at most this (at least max_coast): "
                       "a person back from behind others or from outside the view is "
                       "re-identified (reidentify_speed) without a second confirmation"),
       ParamSpec::real("reacquire_spread", def.reacquire_spread, "m/s", 0, 100,
@@ -333,7 +343,8 @@ PluginDescriptor describe() {
                         "start (a standing scanner stays exact); on: always; off: never"),
       ParamSpec::real("report_coast", 0.5, "s", 0, 3600,
                       "a person unseen longer than this is no longer written (kept until "
-                      "max_coast, so their legs can be re-acquired behind an occlusion)"),
+                      "deleted, max_coast / max_coast_confirmed, so their legs can be "
+                      "re-acquired behind an occlusion)"),
       ParamSpec::boolean("resolve_swaps", true,
                          "a turn in place of over 90° between two scans is read as the person's "
                          "legs swapped by the assignment (the nearer perpendicular), not a turn"),

@@ -74,8 +74,9 @@ struct LegPeopleParams {
   /// Platt-calibrated on 1 leg per 19 non-legs, so 0.25 is already ~6× the prior odds.
   double leg_score = 0.25;
   /// A free object moving at init_speed or more is leg-like from this mean score on, and so is
-  /// one where a confirmed person's missing leg is predicted: on the simulated crowds, whose far
-  /// legs score low, MOTA 0.819 -> 0.826 static, 0.803 -> 0.812 moving (seeds 11-34); on
+  /// one where a confirmed person's missing leg is predicted (a leg of theirs seen this scan or
+  /// within max_coast): on the simulated crowds, whose far
+  /// legs score low, MOTA 0.819 -> 0.823 static, 0.803 -> 0.809 moving (seeds 11-34); on
   /// leg_tracker's positive_3 bag a track follows a person 13 scans further, past the labels.
   double moving_leg_score = 0.05;
   double pair_distance = 0.7;   ///< m, two legs at most this far apart form a person
@@ -86,7 +87,7 @@ struct LegPeopleParams {
   /// 0.777 instead of 0.809 / 0.783 (12 seeds each); negative_2 stays at 0 either way.
   double moving_confirm_travel = 0.7;
   /// A person whose legs' mean classifier score reaches sure_leg_score is confirmed after
-  /// sure_confirm_travel instead of confirm_travel (legs that scissored still; the static-scene
+  /// sure_confirm_travel (at most confirm_travel; legs that scissored still; the static-scene
   /// grid still keeps furniture out). The shipped models' 0.7 is ~44x the prior odds of a leg;
   /// on leg_tracker's labelled bags a person standing by the robot at the start was confirmed
   /// 12 s earlier (positive_4), and no furniture pair of negative_2 scored that high (with 0.5:
@@ -109,8 +110,8 @@ struct LegPeopleParams {
   double reidentify_speed = 1.0;
   double reidentify_max = 2.0;  ///< m, ... the radius grows by at most this much
   double max_coast = 3.0;       ///< s, a person with no leg seen this long is deleted (tentative)
-  /// s, a confirmed person with no leg seen is deleted after as long as they had been tracked
-  /// since confirmation, at least max_coast and at most this. On the simulated crowds (seeds
+  /// s, a confirmed person with no leg seen is deleted after as long as they had been seen
+  /// while confirmed, at least max_coast and at most this. On the simulated crowds (seeds
   /// 11-34 / 100-123) MOTA 0.798 / 0.797 -> 0.819 / 0.812 static, 0.759 / 0.756 -> 0.803 /
   /// 0.815 from a moving robot: people who come back from behind others or from outside the
   /// field of view are re-identified (lostPersonNear) and need no second confirmation. A flat
@@ -142,6 +143,7 @@ struct LegDetection {
   double score = 1;
   Eigen::Vector2d sensor = Eigen::Vector2d::Zero();
   int cluster = -1;
+  bool scored = true;  ///< a classifier gave the score (false: none ran, score is 1)
 };
 
 /// A person as reported.
@@ -169,8 +171,8 @@ class LegPeopleTracker {
             const std::function<bool(double, double)>& is_static);
 
   std::vector<PersonState> people() const;
-  /// Fixed-frame positions of every confirmed person and their legs: what a static-scene map
-  /// must not absorb (a person standing still for minutes).
+  /// Fixed-frame positions of every confirmed person seen within max_coast, and their legs:
+  /// what a static-scene map must not absorb (a person standing still for minutes).
   std::vector<Eigen::Vector2d> occupiedByPeople() const;
   std::size_t objectCount() const;
 
@@ -193,6 +195,7 @@ class LegPeopleTracker {
   long next_object_ = 0, next_person_ = 0;
   double t_ = 0;
   bool started_ = false;
+  bool classified_ = false;  // some leg so far was scored by a classifier (sure_leg_score)
 };
 
 }  // namespace pedtrack::track
