@@ -131,6 +131,13 @@ void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs
 // then needs no second confirmation; the longer they were seen while confirmed (time lost does
 // not count), the surer they are a person worth waiting for. A track confirmed on clutter lives
 // briefly, so it is dropped soon.
+// Unseen longer than max_coast: where the person is predicted is then a guess, kept for
+// re-identification only (not for adopting a low-scored leg, merging someone away, or keeping
+// the static-scene grid out).
+bool LegPeopleTracker::lostLong(const Person& q, double t) const {
+  return t - q.last_seen > p_.max_coast;
+}
+
 double LegPeopleTracker::coastLimit(const Person& q) const {
   if (!q.confirmed) return p_.max_coast;
   return std::clamp(q.tracked, p_.max_coast, std::max(p_.max_coast, p_.max_coast_confirmed));
@@ -161,6 +168,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       if (slot >= 0) continue;
       const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();
       Object* best = nullptr;
+      // A confirmed person's gait predicts where their leg is: an object found there needs only
+      // the score a walking object needs (far legs have few points and score low). Not once
+      // they are lost long: a chair there would hold the track for good (confirmed people are
+      // never deleted on the static scene, and keep the grid from learning it).
+      const bool predicted = P.confirmed && (l.seen || r.seen || !lostLong(P, t));
       // Behind an occlusion a confirmed person's prediction grows uncertain: the gate widens
       // with the time unseen (a tentative person must still prove itself on its own legs).
       double bd = p_.pose.leg_gate;
@@ -168,12 +180,6 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       for (auto& o : objects_) {
         if (o->person >= 0 || o->det < 0) continue;
         const double d = (o->pos() - want).norm();
-        // A confirmed person's gait predicts where their leg is: an object found there needs
-        // only the score a walking object needs (far legs have few points and score low). Not
-        // once they have been lost longer than max_coast: the prediction is then a guess, and a
-        // chair there would hold the track for good (confirmed people are never deleted on the
-        // static scene, and keep the grid from learning it).
-        const bool predicted = P.confirmed && (l.seen || r.seen || t - P.last_seen <= p_.max_coast);
         const bool leg_enough = legLike(*o) || (predicted && o->meanScore() >= p_.moving_leg_score);
         if (d >= bd || !leg_enough) continue;
         // A door jamb or table leg next to a passing person must not become their leg: once
@@ -275,11 +281,9 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
         if (a == b || a->last_seen == -INFINITY || b->last_seen == -INFINITY) continue;
         // A confirmed person coasting beside one seen is likely hidden by them, not a copy.
         if (a->confirmed && b->confirmed && !(a->seen && b->seen)) continue;
-        // One lost longer than max_coast is only kept for re-identification: where they were
-        // predicted says too little to delete someone seen there.
-        if ((a->confirmed && t - a->last_seen > p_.max_coast) ||
-            (b->confirmed && t - b->last_seen > p_.max_coast))
-          continue;
+        // One lost long is only kept for re-identification: where they were predicted says too
+        // little to delete someone seen there.
+        if ((a->confirmed && lostLong(*a, t)) || (b->confirmed && lostLong(*b, t))) continue;
         if (std::hypot(a->est.x() - b->est.x(), a->est.y() - b->est.y()) >= p_.merge_distance)
           continue;
         Person* drop = a->confirmed != b->confirmed   ? (a->confirmed ? b : a).get()
@@ -304,11 +308,10 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
 // times their time unseen (at most reidentify_max) of where they were predicted (the velocity
 // decaying with coast_tau), where they were last seen (they stopped), or where their last
 // velocity would have carried them in at most max_coast (they walked on behind the people
-// hiding them); null if
-// none. They may still hold coasting leg objects: a person whose prediction ran off (a turn
-// misread from a hidden leg sends it the wrong way at walking speed) loses their legs to a new
-// pair formed where they really are, and the track must follow it rather than coast out beside
-// it while the pair starts a second person.
+// hiding them); null if none. They may still hold coasting leg objects: a person whose prediction
+// ran off (a turn misread from a hidden leg sends it the wrong way at walking speed) loses their
+// legs to a new pair formed where they really are, and the track must follow it rather than coast
+// out beside it while the pair starts a second person.
 LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen::Vector2d& p) {
   if (p_.reidentify_speed <= 0) return nullptr;
   Person* best = nullptr;
@@ -407,6 +410,7 @@ std::vector<PersonState> LegPeopleTracker::people() const {
     s.confirmed = q->confirmed;
     s.seen = q->seen;
     s.unseen = t_ - q->last_seen;
+    s.lost = lostLong(*q, t_);
     s.p = {q->est.x(), q->est.y()};
     s.v = q->est.velocity();
     s.yaw = q->est.yaw();
@@ -422,9 +426,9 @@ std::vector<PersonState> LegPeopleTracker::people() const {
 std::vector<Eigen::Vector2d> LegPeopleTracker::occupiedByPeople() const {
   std::vector<Eigen::Vector2d> out;
   for (const auto& q : people_) {
-    // A person lost for longer than max_coast no longer keeps the grid out of where they were
-    // last predicted (a chair put there meanwhile must become static scene).
-    if (t_ - q->last_seen > p_.max_coast) continue;
+    // A person lost long no longer keeps the grid out of where they were last predicted (a
+    // chair put there meanwhile must become static scene).
+    if (lostLong(*q, t_)) continue;
     // Tentative people are not kept out: a pair of table legs taken for a person at start-up
     // must still become static scene, which then deletes it (see updatePeople).
     if (!q->confirmed) continue;

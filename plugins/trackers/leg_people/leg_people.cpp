@@ -63,8 +63,7 @@ class LegPeople : public Tracker {
         follow_(ctx.params.getString("follow")),
         follow_zone_(ctx.params.getVector("follow_zone")),
         static_radius_(ctx.params.getDouble("static_radius")),
-        report_coast_(ctx.params.getDouble("report_coast")),
-        max_coast_(ctx.params.getDouble("max_coast")) {
+        report_coast_(ctx.params.getDouble("report_coast")) {
     if (ctx.params.getBool("static_scene")) {
       StaticScene::Options o;
       o.persist = ctx.params.getDouble("static_persist");
@@ -161,7 +160,7 @@ class LegPeople : public Tracker {
     // last scan, moved into this robot frame by the last pose, are left out of the match.
     std::vector<Eigen::Vector2d> people;
     for (const PersonState& s : tracker_.people()) {
-      if (s.unseen > max_coast_) continue;  // kept lost only for re-identification
+      if (s.lost) continue;  // kept only for re-identification
       double x, y, z;
       last_robot_.inverseComposePoint(s.p.x(), s.p.y(), 0, x, y, z);
       people.emplace_back(x, y);
@@ -252,7 +251,6 @@ class LegPeople : public Tracker {
   std::vector<double> follow_zone_;
   double static_radius_;
   double report_coast_;
-  double max_coast_;
   mutable bool classifier_seen_ = false;
 };
 

@@ -75,9 +75,9 @@ struct LegPeopleParams {
   double leg_score = 0.25;
   /// A free object moving at init_speed or more is leg-like from this mean score on, and so is
   /// one where a confirmed person's missing leg is predicted (a leg of theirs seen this scan or
-  /// within max_coast): on the simulated crowds, whose far
-  /// legs score low, MOTA 0.819 -> 0.823 static, 0.803 -> 0.809 moving (seeds 11-34); on
-  /// leg_tracker's positive_3 bag a track follows a person 13 scans further, past the labels.
+  /// within max_coast): on the simulated crowds, whose far legs score low, MOTA 0.819 -> 0.823
+  /// static, 0.803 -> 0.809 moving (seeds 11-34); on leg_tracker's positive_3 bag a track
+  /// follows a person 13 scans further, past the labels.
   double moving_leg_score = 0.05;
   double pair_distance = 0.7;   ///< m, two legs at most this far apart form a person
   double confirm_travel = 0.5;  ///< m, a tentative person that moved this far is confirmed
@@ -152,6 +152,9 @@ struct PersonState {
   bool confirmed = false;
   bool seen = false;  ///< a leg of theirs was associated this scan
   double unseen = 0;  ///< s since a leg of theirs was last seen
+  /// Unseen longer than max_coast: a confirmed person kept only for re-identification
+  /// (max_coast_confirmed), not written, followed or kept out of scan matching.
+  bool lost = false;
   Eigen::Vector2d p, v;
   double yaw = 0;
   Eigen::Matrix2d cov;
@@ -181,6 +184,7 @@ class LegPeopleTracker {
   struct Person;
   bool legLike(const Object& o) const;
   double coastLimit(const Person& q) const;
+  bool lostLong(const Person& q, double t) const;
   void associate(double t, const std::vector<LegDetection>& legs);
   void updatePeople(double t, const std::vector<LegDetection>& legs,
                     const std::function<bool(double, double)>& is_static);
