@@ -291,3 +291,14 @@ TEST_CASE("a model file found by fuzzing (a matrix with no rows) is refused befo
                     Catch::Contains("matrix_rows_missing.yml: matrix 'svm.class_weights': rows × "
                                     "cols do not match its data"));
 }
+
+TEST_CASE("a model file found by fuzzing (control bytes) is refused before parsing",
+          "[classify][fuzz]") {
+  // fuzz/regressions/fuzz_model: control bytes amid the YAML made OpenCV 4.6's parser loop for
+  // good (the fuzzer's 24 s timeout). The first one, a NUL, is at offset 10.
+  const std::string path =
+      std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/control_bytes_hang.yml";
+  CHECK_THROWS_WITH(pedtrack::classify::loadScorer(path),
+                    Catch::Contains("control_bytes_hang.yml: not a readable model file (control "
+                                    "byte at offset 10)"));
+}
