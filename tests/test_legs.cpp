@@ -486,3 +486,34 @@ TEST_CASE("a walker seen twice by scanners merged out of step is one person (mer
   CHECK(last == 1);
   CHECK(run(0).first == 2);  // off: the walker is reported twice
 }
+
+TEST_CASE("the reported heading is the direction of motion, held while standing", "[legs]") {
+  // Walks towards 30° at 1 m/s for 4 s, then stops dead (the filter's velocity overshoots
+  // backwards: the way moved does not) and stands still for 2 s.
+  auto run = [](double report_heading_speed) {
+    LegPeopleParams p;
+    p.report_heading_speed = report_heading_speed;
+    LegPeopleTracker tr(p);
+    const Eigen::Vector2d sensor(0, -4);
+    std::vector<double> yaws;
+    for (int k = 0; k <= 60; ++k) {
+      const double t = 0.1 * k;
+      const auto [l, r] = pedtrack::test::walkerLegs(std::min(t, 4.0), M_PI / 6, 1.0);
+      tr.step(t, {{l, 0.9, sensor, -1}, {r, 0.9, sensor, -1}}, {});
+      for (const PersonState& s : tr.people())
+        if (s.confirmed) yaws.push_back(s.yaw);
+    }
+    return yaws;
+  };
+  const std::vector<double> yaws = run(0.3), estimator = run(0);
+  REQUIRE(yaws.size() > 40);
+  REQUIRE(yaws.size() == estimator.size());
+  double most_off = 0, differs = 0;
+  for (std::size_t k = 0; k < yaws.size(); ++k) {
+    most_off = std::max(most_off, angleDiff(yaws[k], M_PI / 6));
+    differs = std::max(differs, angleDiff(yaws[k], estimator[k]));
+  }
+  CHECK(most_off < 0.2);                                         // walking, stopping and standing
+  CHECK(angleDiff(yaws.back(), yaws[yaws.size() - 15]) < 1e-9);  // held while standing
+  CHECK(differs > 1e-6);  // 0: the pose estimator's orientation, filtered apart
+}

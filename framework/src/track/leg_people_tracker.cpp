@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <optional>
 #include <tuple>
 
 #include "pedtrack/assignment.h"
@@ -32,6 +34,10 @@ struct LegPeopleTracker::Person {
   Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   double tracked = 0;  // s seen while confirmed (coastLimit)
+  // Reported heading (report_heading_speed): the direction of motion when last seen moving,
+  // from the centre's positions when seen over the last report_heading_window (oldest first).
+  std::optional<double> motion_yaw;
+  std::deque<std::pair<double, Eigen::Vector2d>> centres;
   // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
   double stride_min = INFINITY, stride_max = -INFINITY;
   double score_sum = 0;
@@ -143,6 +149,21 @@ double LegPeopleTracker::coastLimit(const Person& q) const {
   return std::clamp(q.tracked, p_.max_coast, std::max(p_.max_coast, p_.max_coast_confirmed));
 }
 
+// The way the centre moved over the last report_heading_window, when fast enough: the newest
+// position at least that old is the reference (older ones are no longer needed), the first one
+// while the person is younger (by confirmation they have moved confirm_travel from it).
+void LegPeopleTracker::updateMotionHeading(Person& q, double t, const Eigen::Vector2d& c) const {
+  if (p_.report_heading_speed <= 0) return;
+  while (q.centres.size() > 1 && t - q.centres[1].first >= p_.report_heading_window)
+    q.centres.pop_front();
+  if (!q.centres.empty() && t > q.centres.front().first) {
+    const Eigen::Vector2d moved = c - q.centres.front().second;
+    if (moved.norm() >= p_.report_heading_speed * (t - q.centres.front().first))
+      q.motion_yaw = std::atan2(moved.y(), moved.x());
+  }
+  q.centres.emplace_back(t, c);
+}
+
 void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& legs,
                                     const std::function<bool(double, double)>& is_static) {
   // Legs' object ids that no longer exist are freed.
@@ -222,8 +243,9 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
     if (P.seen) P.seen_at = c, P.seen_v = P.est.velocity();
     if (P.seen && P.confirmed) P.tracked += dt_person;
-    // Gait evidence: the legs' separation along the direction of motion swings as they scissor.
+    if (P.seen) updateMotionHeading(P, t, c);
     const Eigen::Vector2d v = P.est.velocity();
+    // Gait evidence: the legs' separation along the direction of motion swings as they scissor.
     if (!P.confirmed && l.seen && r.seen && v.norm() > kStrideMinSpeed) {
       const double sagittal = (l.p - r.p).dot(v.normalized());
       P.stride_min = std::min(P.stride_min, sagittal);
@@ -372,6 +394,7 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
         if (o->person == person->id) o->person = -1;
       if (v.norm() < p_.init_speed) yaw = person->est.yaw();
       person->est = LegPoseEstimator(p_.pose);
+      person->centres.clear();  // the way from where they were lost is no walk seen
     } else {
       // A tentative person's filter follows its legs closely (P3's noise), so that a leg
       // jumping to a neighbouring object shows as a speed no walker has (max_confirm_speed) and a
@@ -413,7 +436,7 @@ std::vector<PersonState> LegPeopleTracker::people() const {
     s.lost = lostLong(*q, t_);
     s.p = {q->est.x(), q->est.y()};
     s.v = q->est.velocity();
-    s.yaw = q->est.yaw();
+    s.yaw = q->motion_yaw.value_or(q->est.yaw());
     s.cov = q->est.state().P.topLeftCorner<2, 2>();
     s.score = q->score_sum / std::max(1, q->score_n);
     s.zone = q->est.zone();
