@@ -517,3 +517,36 @@ TEST_CASE("the reported heading is the direction of motion, held while standing"
   CHECK(angleDiff(yaws.back(), yaws[yaws.size() - 15]) < 1e-9);  // held while standing
   CHECK(differs > 1e-6);  // 0: the pose estimator's orientation, filtered apart
 }
+
+TEST_CASE("a re-identified person standing with jittering legs keeps the heading they walked",
+          "[legs]") {
+  // Walks towards 30° for 4 s, is hidden for 1 s, and reappears 1.2 m to their left (beyond the
+  // one-leg gate: a new pair, re-identified), standing, legs jittering 12 cm across each scan.
+  // The new pose's first scans settle by a few cm: no way walked, so the heading is held.
+  LegPeopleTracker tr(LegPeopleParams{});
+  const Eigen::Vector2d sensor(0, -4), across(-0.5, std::sqrt(3) / 2);
+  long id = 0;
+  double t = 0;
+  for (; t <= 4.0; t += 0.1) {
+    const auto [l, r] = pedtrack::test::walkerLegs(t, M_PI / 6, 1.0);
+    tr.step(t, {{l, 0.9, sensor, -1}, {r, 0.9, sensor, -1}}, {});
+  }
+  for (const PersonState& s : tr.people())
+    if (s.confirmed) id = s.id;
+  REQUIRE(id > 0);
+  for (const double end = t + 1.0; t < end; t += 0.1) tr.step(t, {}, {});
+  const auto [l, r] = pedtrack::test::walkerLegs(4.0, M_PI / 6, 1.0);
+  double most_off = 0;
+  int seen = 0;
+  for (int k = 0; k < 20; ++k, t += 0.1) {
+    const Eigen::Vector2d at = (1.2 + (k % 2 ? 0.12 : 0.0)) * across;
+    tr.step(t, {{l + at, 0.9, sensor, -1}, {r + at, 0.9, sensor, -1}}, {});
+    for (const PersonState& s : tr.people())
+      if (s.id == id && s.seen) {
+        ++seen;
+        most_off = std::max(most_off, angleDiff(s.yaw, M_PI / 6));
+      }
+  }
+  CHECK(seen == 20);
+  CHECK(most_off < 0.2);
+}

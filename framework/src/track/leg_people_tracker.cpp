@@ -151,14 +151,22 @@ double LegPeopleTracker::coastLimit(const Person& q) const {
 
 // The way the centre moved over the last report_heading_window, when fast enough: the newest
 // position at least that old is the reference (older ones are no longer needed), the first one
-// while the person is younger (by confirmation they have moved confirm_travel from it).
+// while the person is younger. Either way they must have moved report_heading_speed times the
+// window (0.15 m): scan-to-scan jitter of a new or re-identified pose is not a direction.
 void LegPeopleTracker::updateMotionHeading(Person& q, double t, const Eigen::Vector2d& c) const {
   if (p_.report_heading_speed <= 0) return;
+  // Time that does not advance adds nothing; time that went back (a bag replayed in a loop, a
+  // clock reset) makes every stored position meaningless.
+  if (!q.centres.empty() && t <= q.centres.back().first) {
+    if (t == q.centres.back().first) return;
+    q.centres.clear();
+  }
   while (q.centres.size() > 1 && t - q.centres[1].first >= p_.report_heading_window)
     q.centres.pop_front();
-  if (!q.centres.empty() && t > q.centres.front().first) {
+  if (!q.centres.empty()) {
     const Eigen::Vector2d moved = c - q.centres.front().second;
-    if (moved.norm() >= p_.report_heading_speed * (t - q.centres.front().first))
+    const double span = std::max(t - q.centres.front().first, p_.report_heading_window);
+    if (moved.norm() >= p_.report_heading_speed * span)
       q.motion_yaw = std::atan2(moved.y(), moved.x());
   }
   q.centres.emplace_back(t, c);

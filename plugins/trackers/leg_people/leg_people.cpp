@@ -338,7 +338,7 @@ PluginDescriptor describe() {
                       "the written yaw is the person's direction of motion (the way they moved "
                       "over report_heading_window) whenever that is at least this fast, else the "
                       "last such direction (the pose estimator's orientation until they first "
-                      "move; it still predicts the legs). Crowds: heading MAE 48 -> 29 deg. 0: "
+                      "move; it still predicts the legs). Crowds: heading MAE 49 -> 28 deg. 0: "
                       "the pose estimator's orientation"),
       ParamSpec::real("report_heading_window", def.report_heading_window, "s", 0.01, 60,
                       "see report_heading_speed"),

@@ -137,19 +137,21 @@ struct LegPeopleParams {
   double tentative_accel_var = 100;
   double tentative_sigma_xy = 0.03;  ///< m, σ_X = σ_Y of a tentative person (P3's)
   /// m/s: a person's reported heading is their direction of motion, the way their body centre
-  /// moved over the last report_heading_window, whenever that is at least this fast; while
-  /// slower, the last such direction (the pose estimator's orientation until they first move).
-  /// In a crowd a person's legs are often hidden or someone else's, and the zoning reads those
-  /// legs: on the simulated crowds (seeds 11-34, static / moving robot) heading MAE 49.4° /
-  /// 49.2° with the pose estimator's orientation, 27.3° / 26.6° with this (0.5 m/s: 36.2° /
-  /// 34.6°; 0.2 m/s: 26.7° / 26.2°, but a standing person's sway comes nearer). People walk
-  /// forwards: one backing up or sidestepping faster than this is reported facing their way
-  /// (leg_people's flip_speed already turns a backing person round). The pose estimator's
-  /// orientation still predicts the legs. 0: off (the pose estimator's orientation throughout).
+  /// moved over the last report_heading_window, whenever that is at least this fast (and at
+  /// least this times the window, 0.15 m, for a person seen for less than the window: the first
+  /// scans of a new or re-identified pose settle by a few cm); while slower, the last such
+  /// direction (the pose estimator's orientation until they first move). In a crowd a person's
+  /// legs are often hidden or someone else's, and the zoning reads those legs: on the simulated
+  /// crowds (seeds 11-34, static / moving robot) heading MAE 49.4° / 49.2° with the pose
+  /// estimator's orientation, 28.0° / 27.0° with this (0.5 m/s: 36.4° / 35.0°; 0.2 m/s: 26.9° /
+  /// 26.4°, but a standing person's sway comes nearer). People walk forwards: one backing up or
+  /// sidestepping faster than this is reported facing their way (leg_people's flip_speed already
+  /// turns a backing person round). The pose estimator's orientation still predicts the legs.
+  /// 0: off (the pose estimator's orientation throughout).
   double report_heading_speed = 0.3;
   /// s, see report_heading_speed. Over half a second the gait's sway averages out, and a walker
   /// stopping does not read as a step back (the filter's velocity overshoots, the way moved
-  /// does not); over 1 s a turn shows late. Crowds: 0.3 s 27.9° / 27.7°, 1 s 33.9° / 33.1°.
+  /// does not); over 1 s a turn shows late. Crowds: 0.3 s 28.4° / 27.9°, 1 s 34.8° / 33.9°.
   double report_heading_window = 0.5;
 };
 
