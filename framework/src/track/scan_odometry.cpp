@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <unordered_set>
 
 namespace pedtrack::track {
@@ -23,6 +24,9 @@ namespace {
 // space cost a few tenths. Below half, most of the scan agrees with nothing in the keyframe: the
 // match rests on too little to trust (or found a wrong alignment), the prediction is safer.
 constexpr double kMinGoodness = 0.5;
+
+// Points queried per ICP iteration: one in this many (see Impl()); all of a sparse scan.
+constexpr unsigned kQueryDecimation = 3;
 
 std::uint64_t cellKey(double x, double y, double inv_cell) {
   const auto cx = static_cast<std::int32_t>(std::floor(x * inv_cell));
@@ -42,6 +46,11 @@ struct ScanOdometry::Impl {
   // 5 cm, 1.1 cm / 0.35° with a dense keyframe). Query cost grows only with log(size), and the
   // kd-tree is built once per keyframe. Both maps are refilled in place (buffers reused).
   mrpt::maps::CSimplePointsMap keyframe, scan;
+  // The last local_keyframes keyframes' points in the odometry frame, and their union (thinned
+  // as a keyframe is): the reference of a sparse scan.
+  std::deque<std::vector<Eigen::Vector2d>> recent;
+  mrpt::maps::CSimplePointsMap local_map;
+  std::vector<Eigen::Vector2d> local_points;  // buffer, reused
   bool have_keyframe = false;
   CPose2D kf_pose;  // keyframe's pose in the odometry frame
   CPose2D pose;     // last returned pose
@@ -75,13 +84,14 @@ struct ScanOdometry::Impl {
     // iteration. Each iteration queries a third of the thinned scan (a different third each
     // round; MRPT's default is a fifth): about half the cost of querying all for ~0.3 cm more
     // error over the test drive, where a fifth cost ~1 cm more in the worst case.
-    io.corresponding_points_decimation = 3;
+    io.corresponding_points_decimation = kQueryDecimation;
     // Only the mean pose is used: the covariance and quality estimates would cost extra passes.
     io.skip_cov_calculation = true;
     io.skip_quality_calculation = true;
     io.doRANSAC = false;
     cells.reserve(4096);
     keyframe.reserve(4096);
+    local_map.reserve(4096);
     scan.reserve(4096);
   }
 
@@ -124,6 +134,20 @@ struct ScanOdometry::Impl {
     thin(pts, opt.decimation_cell / 5, keyframe);
     kf_pose = p;
     have_keyframe = true;
+    if (opt.local_keyframes <= 1) return;
+    std::vector<Eigen::Vector2d> in_odometry;
+    in_odometry.reserve(pts.size());
+    for (const auto& q : pts) {
+      if (!q.allFinite()) continue;
+      double x, y;
+      p.composePoint(q.x(), q.y(), x, y);
+      in_odometry.emplace_back(x, y);
+    }
+    recent.push_back(std::move(in_odometry));
+    while (recent.size() > opt.local_keyframes) recent.pop_front();
+    local_points.clear();
+    for (const auto& v : recent) local_points.insert(local_points.end(), v.begin(), v.end());
+    thin(local_points, opt.decimation_cell / 5, local_map);
   }
 
   CPose2D update(const std::vector<Eigen::Vector2d>& pts, double t) {
@@ -135,11 +159,16 @@ struct ScanOdometry::Impl {
       accept(pred, t);
       return pose = pred;
     }
-    // CICP estimates the pose of m2 (this scan) in m1's frame (the keyframe); its kd-tree is
-    // built on m1. The guess is the prediction relative to the keyframe.
+    // CICP estimates the pose of m2 (this scan) in m1's frame (the keyframe, or for a sparse
+    // scan the local map, which is in the odometry frame); its kd-tree is built on m1. The guess
+    // is the prediction in that frame.
+    const bool sparse = scan.size() < opt.sparse_points;
+    icp.options.corresponding_points_decimation = sparse ? 1 : kQueryDecimation;
+    const bool local = sparse && opt.local_keyframes > 1;
+    const CPose2D origin = local ? CPose2D() : kf_pose;
     mrpt::slam::CICP::TReturnInfo info;
-    const auto pdf = icp.Align(&keyframe, &scan, pred - kf_pose, info);
-    const CPose2D est = kf_pose + pdf->getMeanVal();
+    const auto pdf = icp.Align(local ? &local_map : &keyframe, &scan, pred - origin, info);
+    const CPose2D est = origin + pdf->getMeanVal();
     const bool ok = info.goodness >= kMinGoodness && (est - pred).norm() <= opt.max_step;
     if (ok) {
       ++matched;

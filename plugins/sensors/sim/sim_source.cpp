@@ -27,6 +27,7 @@ class SimSource : public Sensor {
         realtime_(ctx.params.getString("rate") == "realtime"),
         truth_key_(ctx.params.getString("truth")),
         point_truth_(ctx.params.getBool("point_truth")),
+        odometry_(ctx.params.getBool("odometry")),
         where_(ctx.params.where("truth")) {}
 
   void finish() override {
@@ -60,11 +61,13 @@ class SimSource : public Sensor {
     sim::SimFrame f;
     if (!sim_.next(f)) return false;
     frame.t = f.t;
-    frame.robot_pose = f.robot_odometry;
-    frame.has_odometry = true;  // a static scanner's odometry is the identity, and known
+    // Without odometry (a wheelchair with no wheel encoders) the robot stays at the identity and
+    // nothing says it moves, as with a bag that has no /tf.
+    frame.robot_pose = odometry_ ? f.robot_odometry : mrpt::poses::CPose3D();
+    frame.has_odometry = odometry_;  // a static scanner's odometry is the identity, and known
     // The scan (the odometry observation's content is the robot pose itself).
     frame.observations.push_back(f.observations.back());
-    frame.sensor_pose = f.robot_odometry + sim_.scenario().sensor.mount;
+    frame.sensor_pose = frame.robot_pose + sim_.scenario().sensor.mount;
     frame.sensors.push_back({frame.observations.back()->sensorLabel, frame.sensor_pose});
     if (truth_) truth_->write(f);
     if (point_truth_out_) point_truth_out_->write(sim::pointTruth(f));
@@ -82,6 +85,7 @@ class SimSource : public Sensor {
   bool realtime_;
   std::string truth_key_, where_;
   bool point_truth_;
+  bool odometry_;
   std::unique_ptr<sim::TruthCsvWriter> truth_;
   std::unique_ptr<LabelFileWriter> point_truth_out_;
   std::size_t done_ = 0;
@@ -105,6 +109,10 @@ PluginDescriptor describe() {
       ParamSpec::boolean(
           "point_truth", true,
           "also write truth_points.bin (what each return hit) next to the truth CSV"),
+      ParamSpec::boolean("odometry", true,
+                         "false: the frames carry no robot motion (a robot without wheel "
+                         "odometry: the robot stays at the origin, has_odometry is false); score "
+                         "such runs in the sensor frame (pedtrack eval --frame sensor)"),
   };
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<SimSource>(ctx);

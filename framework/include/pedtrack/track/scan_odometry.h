@@ -10,6 +10,12 @@
 // velocity prediction; a match that disagrees with it by more than max_step, or that few points
 // support, is rejected and the prediction is used instead (counted in rejected()); a rejected
 // scan becomes a keyframe only if the scan before it was rejected too.
+//
+// Open spaces (a plaza or a crowd with a few poles and bins, no walls) give sparse scans: with
+// only the newest keyframe to match, a rotation error accepted once is carried into every later
+// keyframe, and the estimate turns away for good. A sparse scan is therefore matched against the
+// last local_keyframes keyframes together (each one's points in the odometry frame), where a
+// wrong rotation misaligns the older views.
 #include <mrpt/poses/CPose2D.h>
 
 #include <Eigen/Core>
@@ -34,7 +40,15 @@ struct ScanOdometryOptions {
   /// changes speed by 10 m/s within a 10 Hz scan, a jump that big is a wrong local minimum.
   double max_step = 1.0;
   /// A scan with fewer points than this (after thinning) is not matched: the prediction is used.
-  std::size_t min_points = 30;
+  /// A few poles or bins hold a match (10 points: two bins and a pole); with 30, scans of an
+  /// open space went unmatched for seconds and the prediction carried a turn on.
+  std::size_t min_points = 10;
+  /// A scan with fewer points than this (after thinning) is sparse: every point is queried in
+  /// every ICP iteration (else a third, a different third each round), and the reference is the
+  /// last local_keyframes keyframes together.
+  std::size_t sparse_points = 300;
+  /// Keyframes matched together for a sparse scan (1: the newest only).
+  std::size_t local_keyframes = 6;
   /// Points are thinned to one per cell (m) of a grid in the robot frame before matching: near
   /// returns of a scanner are far denser than needed and would dominate cost and the fit.
   double decimation_cell = 0.05;
