@@ -130,18 +130,20 @@ struct ScanOdometry::Impl {
   // This scan becomes the keyframe. Thinned to a fifth of the scan's cell (1 cm by default):
   // dense enough for the reason above, but the keyframe of several scanners that see the same
   // wall does not hold every one of their returns.
-  void takeKeyframe(const std::vector<Eigen::Vector2d>& pts, const CPose2D& p) {
+  // A keyframe taken after matching kept failing (re-anchoring at the prediction) disagrees
+  // with the views before it: those leave the local map.
+  void takeKeyframe(const std::vector<Eigen::Vector2d>& pts, const CPose2D& p, bool reanchor) {
     thin(pts, opt.decimation_cell / 5, keyframe);
     kf_pose = p;
     have_keyframe = true;
     if (opt.local_keyframes <= 1) return;
-    std::vector<Eigen::Vector2d> in_odometry;
-    in_odometry.reserve(pts.size());
-    for (const auto& q : pts) {
-      if (!q.allFinite()) continue;
-      double x, y;
-      p.composePoint(q.x(), q.y(), x, y);
-      in_odometry.emplace_back(x, y);
+    if (reanchor) recent.clear();
+    // The thinned keyframe, not the scan, in the odometry frame.
+    std::vector<Eigen::Vector2d> in_odometry(keyframe.size());
+    for (std::size_t i = 0; i < keyframe.size(); ++i) {
+      float x, y, z;
+      keyframe.getPoint(i, x, y, z);
+      p.composePoint(x, y, in_odometry[i].x(), in_odometry[i].y());
     }
     recent.push_back(std::move(in_odometry));
     while (recent.size() > opt.local_keyframes) recent.pop_front();
@@ -155,7 +157,7 @@ struct ScanOdometry::Impl {
     thin(pts, opt.decimation_cell, scan);
     if (scan.size() < opt.min_points) return pose = pred;
     if (!have_keyframe) {
-      takeKeyframe(pts, pred);
+      takeKeyframe(pts, pred, false);
       accept(pred, t);
       return pose = pred;
     }
@@ -188,7 +190,7 @@ struct ScanOdometry::Impl {
     if ((ok || rejected_run >= 2) &&
         (rel.norm() >= opt.keyframe_distance ||
          std::abs(mrpt::math::wrapToPi(rel.phi())) >= opt.keyframe_angle))
-      takeKeyframe(pts, pose);
+      takeKeyframe(pts, pose, !ok);
     return pose;
   }
 };

@@ -64,7 +64,7 @@ class SimSource : public Sensor {
     // Without odometry (a wheelchair with no wheel encoders) the robot stays at the identity and
     // nothing says it moves, as with a bag that has no /tf.
     frame.robot_pose = odometry_ ? f.robot_odometry : mrpt::poses::CPose3D();
-    frame.has_odometry = odometry_;  // a static scanner's odometry is the identity, and known
+    frame.has_odometry = odometry_;  // with it, a standing scanner's is the identity, and known
     // The scan (the odometry observation's content is the robot pose itself).
     frame.observations.push_back(f.observations.back());
     frame.sensor_pose = frame.robot_pose + sim_.scenario().sensor.mount;
