@@ -158,3 +158,21 @@ TEST_CASE("without odometry a robot driving through a crowd is tracked from its 
   REQUIRE(r2.exit_code == 0);
   CHECK(jsonNumber(evalRunJson(both, {"--frame", "sensor"}), "mota") >= 0.7);
 }
+
+TEST_CASE("a wheelchair without odometry keeps following its person through an open space",
+          "[legs][pipeline]") {
+  // legs_following_open: the leader walks 1.5 m ahead of the chair for 45 s, two bends and a
+  // sharp turn, among passers-by, trees and poles; no walls, no odometry (scan matching only).
+  // Measured: the leader's MOTA 0.917 (every miss in the first 3.7 s: standing, then until
+  // confirmed), 0 ID switches, MOTP 0.022 m.
+  const std::string dir = freshDir("legs_following_open");
+  const auto r = runHost({"run", kConfigs + "people_2d_legs.ini", "--set",
+                          "source.scenario=" + kConfigs + "scenarios/legs_following_open.ini",
+                          "--set", "source.odometry=false", "--out", dir, "-q"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const std::string e = evalRunJson(dir, {"--frame", "sensor", "--following", "1"});
+  CHECK(jsonNumber(e, "mota") >= 0.85);
+  CHECK(jsonNumber(e, "id_switches") == 0);
+  CHECK(jsonNumber(e, "motp_m") <= 0.05);
+}
