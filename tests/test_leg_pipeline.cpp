@@ -29,16 +29,26 @@ std::set<std::string> trackIds(const std::string& csv) {
   return ids;
 }
 
+// people_2d_legs.ini on a shipped scenario with `sets` as --set overrides, into a fresh run
+// directory `name`; the host must succeed. Returns the directory.
+std::string runScenario(const std::string& name, const std::string& scenario,
+                        const std::vector<std::string>& sets = {}) {
+  const std::string dir = freshDir(name);
+  std::vector<std::string> args{"run", kConfigs + "people_2d_legs.ini", "--set",
+                                "source.scenario=" + kConfigs + "scenarios/" + scenario};
+  for (const std::string& s : sets) args.insert(args.end(), {"--set", s});
+  args.insert(args.end(), {"--out", dir, "-q"});
+  const auto r = runHost(args);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  return dir;
+}
+
 }  // namespace
 
 TEST_CASE("people_2d_legs.ini keeps a person who stands still for 60 s on one track",
           "[legs][pipeline]") {
-  const std::string dir = freshDir("legs_standing");
-  const auto r = runHost({"run", kConfigs + "people_2d_legs.ini", "--set",
-                          "source.scenario=" + kConfigs + "scenarios/legs_standing_60s.ini",
-                          "--out", dir, "-q"});
-  INFO(r.output);
-  REQUIRE(r.exit_code == 0);
+  const std::string dir = runScenario("legs_standing", "legs_standing_60s.ini");
   // Measured: one track from 5.4 to 75.8 s, MOTA 0.976, no ID switch, no false positive.
   const std::string stander = evalRunJson(dir, {"--following", "1"});
   CHECK(jsonNumber(stander, "mota") >= 0.9);
@@ -52,13 +62,8 @@ TEST_CASE("person following marks the person standing in front, and only them",
           "[legs][pipeline]") {
   // legs_standing_60s: person 1 stands 60 s at (3.6, 0) in front of the scanner, person 2 crosses
   // the room behind. The follow zone is widened to reach 3.6 m.
-  const std::string dir = freshDir("legs_follow");
-  const auto r = runHost({"run", kConfigs + "people_2d_legs.ini", "--set",
-                          "source.scenario=" + kConfigs + "scenarios/legs_standing_60s.ini",
-                          "--set", "track.follow=nearest", "--set", "track.follow_zone=0.3 4.5 1.5",
-                          "--out", dir, "-q"});
-  INFO(r.output);
-  REQUIRE(r.exit_code == 0);
+  const std::string dir = runScenario("legs_follow", "legs_standing_60s.ini",
+                                      {"track.follow=nearest", "track.follow_zone=0.3 4.5 1.5"});
   // Fields of each row: frame (1), track (2), status (17).
   std::map<std::string, int> following_per_frame;
   std::set<std::string> followed;
@@ -139,23 +144,14 @@ TEST_CASE("without odometry a robot driving through a crowd is tracked from its 
   // sparse scans; the tracks are scored in the sensor frame. Seed 31, where with one keyframe
   // per match the estimate turned 100° away (sensor-frame MOTA 0.46; measured now 0.79; with the
   // simulator's noisy odometry 0.84).
-  const std::string dir = freshDir("legs_no_odometry");
-  const auto r =
-      runHost({"run", kConfigs + "people_2d_legs.ini", "--set",
-               "source.scenario=" + kConfigs + "scenarios/legs_crowd_10_moving.ini", "--set",
-               "source.odometry=false", "--set", "source.seed=31", "--out", dir, "-q"});
-  INFO(r.output);
-  REQUIRE(r.exit_code == 0);
+  const std::string dir = runScenario("legs_no_odometry", "legs_crowd_10_moving.ini",
+                                      {"source.odometry=false", "source.seed=31"});
   CHECK(readFile(dir + "/run.json").find("scan_matches") != std::string::npos);
   CHECK(jsonNumber(evalRunJson(dir, {"--frame", "sensor"}), "mota") >= 0.75);
   // scan_odometry = on with odometry too: the match replaces the odometry (composing the two
   // counted every motion twice: sensor-frame MOTA 0.59 on the scenario's own seed; now 0.78).
-  const std::string both = freshDir("legs_scan_odometry_on");
-  const auto r2 = runHost({"run", kConfigs + "people_2d_legs.ini", "--set",
-                           "source.scenario=" + kConfigs + "scenarios/legs_crowd_10_moving.ini",
-                           "--set", "track.scan_odometry=on", "--out", both, "-q"});
-  INFO(r2.output);
-  REQUIRE(r2.exit_code == 0);
+  const std::string both =
+      runScenario("legs_scan_odometry_on", "legs_crowd_10_moving.ini", {"track.scan_odometry=on"});
   CHECK(jsonNumber(evalRunJson(both, {"--frame", "sensor"}), "mota") >= 0.7);
 }
 
@@ -165,12 +161,8 @@ TEST_CASE("a wheelchair without odometry keeps following its person through an o
   // sharp turn, among passers-by, trees and poles; no walls, no odometry (scan matching only).
   // Measured: the leader's MOTA 0.917 (every miss in the first 3.7 s: standing, then until
   // confirmed), 0 ID switches, MOTP 0.022 m.
-  const std::string dir = freshDir("legs_following_open");
-  const auto r = runHost({"run", kConfigs + "people_2d_legs.ini", "--set",
-                          "source.scenario=" + kConfigs + "scenarios/legs_following_open.ini",
-                          "--set", "source.odometry=false", "--out", dir, "-q"});
-  INFO(r.output);
-  REQUIRE(r.exit_code == 0);
+  const std::string dir =
+      runScenario("legs_following_open", "legs_following_open.ini", {"source.odometry=false"});
   const std::string e = evalRunJson(dir, {"--frame", "sensor", "--following", "1"});
   CHECK(jsonNumber(e, "mota") >= 0.85);
   CHECK(jsonNumber(e, "id_switches") == 0);
