@@ -81,6 +81,22 @@ TEST_CASE("motion scripts give the commanded distance, time and heading", "[sim]
                     Catch::Contains("f.ini: [p] script: unknown motion command 'jump'"));
   CHECK_THROWS_WITH(Trajectory::fromScript("walk x", 0, 0, 0, lim, "f.ini: [p] script"),
                     Catch::Contains("'x' is not a number"));
+  // Bounds that keep the sampling finite (fuzz_scenario: a stop of 2e51 s overflowed the sample
+  // count; fuzz/regressions/fuzz_scenario/stop_duration_overflow.ini).
+  CHECK_THROWS_WITH(Trajectory::fromScript("walk 1; stop 2e51", 0, 0, 0, lim, "f.ini: [p] script"),
+                    Catch::Contains("'stop 2e51': duration (s) beyond 36000"));
+  CHECK_THROWS_WITH(Trajectory::fromScript("walk nan", 0, 0, 0, lim, "t"),
+                    Catch::Contains("'nan' is not a number"));
+  CHECK_THROWS_WITH(Trajectory::fromScript("walk 1e5", 0, 0, 0, lim, "t"),
+                    Catch::Contains("distance (m) beyond 10000"));
+  CHECK_THROWS_WITH(Trajectory::fromScript("turn 4000", 0, 0, 0, lim, "t"),
+                    Catch::Contains("angle (deg) beyond 3600"));
+  std::string far;
+  for (int i = 0; i < 11; ++i) far += "walk 10000; ";
+  CHECK_THROWS_WITH(Trajectory::fromScript(far, 0, 0, 0, lim, "t"),
+                    Catch::Contains("the script walks farther than 100 km"));
+  CHECK_THROWS_WITH(Trajectory::fromScript("stop 30000; stop 30000", 0, 0, 0, lim, "t"),
+                    Catch::Contains("the script lasts longer than 36000 s"));
 }
 
 TEST_CASE("a 2D beam hits a known torso ellipse at the hand-computed range", "[sim]") {

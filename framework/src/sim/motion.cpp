@@ -14,6 +14,14 @@
 namespace pedtrack::sim {
 namespace {
 
+// A script's bounds: its samples (a path point every 2 cm, a pose every kDt) stay countable and
+// fit in memory. 10 km a command, 100 km in all (10 h of walking is ~50 km), 10 turns, and no
+// longer than the longest scenario ([scenario] duration).
+constexpr double kMaxDistance = 10000;       // m
+constexpr double kMaxAngle = 3600;           // deg
+constexpr double kMaxDuration = 36000;       // s
+constexpr std::size_t kMaxPathPoints = 5e6;  // 100 km
+
 double wrap(double a) {
   return mrpt::math::wrapToPi(a);
 }
@@ -112,6 +120,7 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
   Builder b{x, y, yaw, lim, {}};
   std::stringstream all(script);
   std::string cmdtext;
+  std::size_t path_points = 0;  // of every translation so far (a point every 2 cm)
   while (std::getline(all, cmdtext, ';')) {
     std::istringstream cs(cmdtext);
     std::string cmd;
@@ -121,15 +130,35 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
     while (cs >> tok) {
       char* end = nullptr;
       const double v = std::strtod(tok.c_str(), &end);
-      if (end == tok.c_str() || *end)
+      if (end == tok.c_str() || *end || !std::isfinite(v))
         throw ConfigError(where + ": '" + trim(cmdtext) + "': '" + tok + "' is not a number");
       args.push_back(v);
     }
+    // Bounds that keep a script's sampling finite (a path point every 2 cm, a sample every
+    // kDt): a walk of 1e50 m or a stop of 1e50 s overflowed the sample counts (fuzz_scenario).
+    auto within = [&](double v, double max, const char* what) {
+      if (std::abs(v) > max)
+        throw ConfigError(where + ": '" + trim(cmdtext) + "': " + what + " beyond " +
+                          std::to_string(static_cast<long>(max)));
+    };
+    if (cmd == "walk" || cmd == "back" || cmd == "left" || cmd == "right")
+      for (double a : args) within(a, kMaxDistance, "distance (m)");
+    if (cmd == "goto")
+      for (double a : args) within(a, kMaxDistance, "coordinate (m)");
+    if (cmd == "turn" || cmd == "face")
+      for (double a : args) within(a, kMaxAngle, "angle (deg)");
+    if (cmd == "arc" && args.size() == 2) {
+      within(args[0], kMaxDistance, "radius (m)");
+      within(args[1], kMaxAngle, "angle (deg)");
+    }
+    if (cmd == "stop")
+      for (double a : args) within(a, kMaxDuration, "duration (s)");
     auto need = [&](std::size_t n) {
       if (args.size() != n)
         throw ConfigError(where + ": '" + trim(cmdtext) + "': '" + cmd + "' takes " +
                           std::to_string(n) + " number" + (n == 1 ? "" : "s"));
     };
+    const std::size_t pieces_before = b.pieces.size();
     if (cmd == "walk" || cmd == "back" || cmd == "left" || cmd == "right") {
       need(1);
       const double off = cmd == "walk"   ? 0
@@ -163,6 +192,10 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
       throw ConfigError(where + ": unknown motion command '" + cmd +
                         "' (walk, back, left, right, turn, arc, goto, face, stop, speed)");
     }
+    if (b.pieces.size() > pieces_before) path_points += b.pieces.back().px.size();
+    if (path_points > kMaxPathPoints)
+      throw ConfigError(where + ": the script walks farther than " +
+                        std::to_string(static_cast<long>(kMaxPathPoints * 0.02 / 1000)) + " km");
   }
 
   // Time-parameterise: consecutive translations form one run without stopping in between;
@@ -212,6 +245,10 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
     }
   }
 
+  if (t > kMaxDuration)
+    throw ConfigError(where + ": the script lasts longer than " +
+                      std::to_string(static_cast<long>(kMaxDuration)) +
+                      " s (the longest scenario)");
   // Resample at kDt; the body turns towards the commanded facing at a bounded rate.
   Trajectory tr;
   std::size_t j = 0;
