@@ -47,9 +47,11 @@ struct ScanOdometry::Impl {
   // kd-tree is built once per keyframe. Both maps are refilled in place (buffers reused).
   mrpt::maps::CSimplePointsMap keyframe, scan;
   // The last local_keyframes keyframes' points in the odometry frame, and their union (thinned
-  // as a keyframe is): the reference of a sparse scan.
+  // as a keyframe is): the reference of a sparse scan, built when one first needs it after a new
+  // keyframe (a room's dense scans never do).
   std::deque<std::vector<Eigen::Vector2d>> recent;
   mrpt::maps::CSimplePointsMap local_map;
+  bool local_map_stale = true;
   std::vector<Eigen::Vector2d> local_points;  // buffer, reused
   bool have_keyframe = false;
   CPose2D kf_pose;  // keyframe's pose in the odometry frame
@@ -147,9 +149,17 @@ struct ScanOdometry::Impl {
     }
     recent.push_back(std::move(in_odometry));
     while (recent.size() > opt.local_keyframes) recent.pop_front();
-    local_points.clear();
-    for (const auto& v : recent) local_points.insert(local_points.end(), v.begin(), v.end());
-    thin(local_points, opt.decimation_cell / 5, local_map);
+    local_map_stale = true;
+  }
+
+  const mrpt::maps::CSimplePointsMap& localMap() {
+    if (local_map_stale) {
+      local_points.clear();
+      for (const auto& v : recent) local_points.insert(local_points.end(), v.begin(), v.end());
+      thin(local_points, opt.decimation_cell / 5, local_map);
+      local_map_stale = false;
+    }
+    return local_map;
   }
 
   CPose2D update(const std::vector<Eigen::Vector2d>& pts, double t) {
@@ -169,7 +179,7 @@ struct ScanOdometry::Impl {
     const bool local = sparse && opt.local_keyframes > 1;
     const CPose2D origin = local ? CPose2D() : kf_pose;
     mrpt::slam::CICP::TReturnInfo info;
-    const auto pdf = icp.Align(local ? &local_map : &keyframe, &scan, pred - origin, info);
+    const auto pdf = icp.Align(local ? &localMap() : &keyframe, &scan, pred - origin, info);
     const CPose2D est = origin + pdf->getMeanVal();
     const bool ok = info.goodness >= kMinGoodness && (est - pred).norm() <= opt.max_step;
     if (ok) {
