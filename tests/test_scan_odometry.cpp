@@ -136,15 +136,17 @@ TEST_CASE("too few points give the constant-velocity prediction", "[scan_odometr
   const World w = room();
   std::mt19937 rng(3);
   ScanOdometry odo;
-  // Nothing seen yet: the identity, no throw.
+  // Nothing seen yet: the identity, no throw, and no origin taken yet.
   CHECK(odo.update({}, 1.0) == CPose2D());
   CHECK(odo.update({V2(1, 0), V2(2, 0)}, 1.05) == CPose2D());
+  CHECK_FALSE(odo.started());
   // Moving at 0.5 m/s and turning at 10°/s: the last two scans set the velocity.
   auto truth = [](double t) { return CPose2D(0.5 * t, 0, 10 * kDeg * t); };
   CPose2D prev, last;
   for (int k = 0; k <= 10; ++k) {
     prev = last;
     last = odo.update(scan(w, kStart + truth(0.1 * k), rng), 2.0 + 0.1 * k);
+    CHECK(odo.started());  // from the first scan with min_points on
   }
   const long matched = odo.matched();
   const CPose2D d = last - prev;

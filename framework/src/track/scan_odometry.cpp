@@ -216,6 +216,9 @@ CPose2D ScanOdometry::update(const std::vector<Eigen::Vector2d>& points, double 
 CPose2D ScanOdometry::pose() const {
   return impl_->pose;
 }
+bool ScanOdometry::started() const {
+  return impl_->have_keyframe;
+}
 long ScanOdometry::matched() const {
   return impl_->matched;
 }

@@ -188,10 +188,11 @@ class LegPeople : public Tracker {
       moved_ = true;
     const mrpt::poses::CPose3D ego =
         moved_ ? mrpt::poses::CPose3D(matched) : mrpt::poses::CPose3D();
-    // The match starts where the robot was at the first frame. With odometry as well (on), the
-    // match replaces it from there: composing the two counted every motion twice.
-    if (!start_) start_ = f.robot_pose;
-    const mrpt::poses::CPose3D robot = *start_ + ego;
+    // The match starts where the robot was at the first scan it could match (with min_points;
+    // before it the frame's own pose stands). With odometry as well (on), the match replaces it
+    // from there: composing the two counted every motion twice.
+    if (!start_ && odometry_->started()) start_ = f.robot_pose;
+    const mrpt::poses::CPose3D robot = start_ ? *start_ + ego : f.robot_pose;
     const mrpt::poses::CPose3D old_inv = -f.robot_pose;  // sensor poses -> their mounts
     f.sensor_pose = robot + (old_inv + f.sensor_pose);
     for (SensorPose& s : f.sensors) s.pose = robot + (old_inv + s.pose);
@@ -246,7 +247,7 @@ class LegPeople : public Tracker {
   std::optional<ScanOdometry> odometry_;
   mrpt::poses::CPose3D last_robot_;  // the last frame's scan-matched robot pose
   bool moved_ = false;               // scan matching has seen the robot leave where it started
-  std::optional<mrpt::poses::CPose3D> start_;  // the robot pose of the first frame matched
+  std::optional<mrpt::poses::CPose3D> start_;  // the robot pose at the scan odometry's origin
   // Beyond the matcher's jitter on a standing scanner (2-3 cm, a fraction of a degree).
   static constexpr double kMovedDistance = 0.1, kMovedAngle = 3.0 * M_PI / 180;
   static constexpr double kPersonR2 = 0.5 * 0.5;  // m², a person's legs and a step around them

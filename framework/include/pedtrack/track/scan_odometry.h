@@ -67,6 +67,9 @@ class ScanOdometry {
   mrpt::poses::CPose2D update(const std::vector<Eigen::Vector2d>& points, double t);
   /// The pose update() last returned (identity before the first).
   mrpt::poses::CPose2D pose() const;
+  /// A scan with min_points has been seen: the odometry frame is the robot's pose at that scan
+  /// (scans before it, empty or nearly, leave the origin unset).
+  bool started() const;
   /// Scans whose match was accepted / rejected (prediction used); scans with too few points to
   /// match count in neither.
   long matched() const;
