@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 
+#include "pedtrack/bag_check.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/text.h"
 
@@ -58,6 +59,7 @@ BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
                         const std::string& labels_topic) {
   rosbag::Bag bag;
   try {
+    checkBagStructure(path);  // rosbag_storage trusts the lengths in the file
     bag.open(path, rosbag::bagmode::Read);
   } catch (const std::exception& e) {
     throw ConfigError("--truth: cannot open bag '" + path + "': " + oneLine(e.what()));

@@ -10,6 +10,8 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <iostream>
 #include <tuple>
 
@@ -138,8 +140,11 @@ sensor_msgs::LaserScan flatScan(const ros::Time& stamp, const std::string& frame
 
 // A small bag: a robot driving along x at 1 m/s (odom → base_link on /tf, or nav_msgs/Odometry on
 // /odom), a laser mounted at (0.2, 0, 0.3) on it (/tf_static), and a 10 Hz LaserScan.
-std::string writeMovingRobotBag(const std::string& path, bool use_tf) {
+std::string writeMovingRobotBag(
+    const std::string& path, bool use_tf,
+    rosbag::compression::CompressionType compression = rosbag::compression::Uncompressed) {
   rosbag::Bag bag(path, rosbag::bagmode::Write);
+  bag.setCompression(compression);
   const double t0 = 1600000000.0;
   tf2_msgs::TFMessage mount;
   geometry_msgs::TransformStamped m;
@@ -315,4 +320,90 @@ TEST_CASE("negative_2.bag's three scanners merge into frames of three observatio
   frames[0].observations[1]->getSensorPose(rear);
   CHECK(rear.x() == Approx(-0.27).margin(1e-9));
   CHECK(rear.yaw() == Approx(176.4 * M_PI / 180).margin(1e-9));
+}
+
+namespace {
+
+// The bag's top-level records: (position, header fields as raw bytes, data position, data size).
+struct RawRecord {
+  std::size_t at, data_at, data_size;
+  std::string header;
+};
+std::vector<RawRecord> rawRecords(const std::string& bytes) {
+  std::vector<RawRecord> out;
+  auto u32 = [&](std::size_t p) {
+    std::uint32_t v;
+    std::memcpy(&v, bytes.data() + p, 4);
+    return v;
+  };
+  for (std::size_t p = 13; p + 8 <= bytes.size();) {
+    const std::uint32_t hl = u32(p);
+    RawRecord r{p, p + 8 + hl, u32(p + 4 + hl), bytes.substr(p + 4, hl)};
+    out.push_back(r);
+    p = r.data_at + r.data_size;
+  }
+  return out;
+}
+
+std::string replayError(const std::string& bag) {
+  try {
+    replay("rosbag", bag);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("bz2 and lz4 chunks pass the bag check and replay as the uncompressed bag", "[rosbag]") {
+  const std::string dir = freshDir("rosbag_compressed");
+  const auto plain = replay("rosbag", writeMovingRobotBag(dir + "/none.bag", true));
+  for (const auto c : {rosbag::compression::BZ2, rosbag::compression::LZ4}) {
+    const auto frames = replay("rosbag", writeMovingRobotBag(dir + "/c.bag", true, c));
+    REQUIRE(frames.size() == plain.size());
+    CHECK(frames.back().robot_pose.x() == Approx(plain.back().robot_pose.x()).margin(1e-9));
+  }
+}
+
+TEST_CASE("a bag whose lengths point past their records is refused before rosbag reads it",
+          "[rosbag]") {
+  // rosbag_storage reads a record header's fields by their own lengths, and a message at
+  // whatever offset the index names (fuzz_rosbag: reads past its buffers, under ASan a crash).
+  const std::string dir = freshDir("rosbag_damaged");
+  const std::string good = readFile(writeMovingRobotBag(dir + "/good.bag", true));
+  // A message record's op field (inside the uncompressed chunk) claiming 200 bytes.
+  std::string field = good;
+  const std::size_t op = field.find(std::string("\x04\x00\x00\x00op=\x02", 8));
+  REQUIRE(op != std::string::npos);
+  field[op] = char(200);
+  writeFile(dir + "/field.bag", field);
+  const std::string e1 = replayError(dir + "/field.bag");
+  CHECK_THAT(e1, Catch::Contains("[source] file: cannot open bag '" + dir + "/field.bag'") &&
+                     Catch::Contains("a header field longer than its header at byte"));
+  CHECK(e1.find('\n') == std::string::npos);
+  // An index entry one byte past its message.
+  std::string index = good;
+  std::size_t entries = 0;
+  for (const RawRecord& r : rawRecords(good))
+    if (r.header.find(std::string("op=\x04", 4)) != std::string::npos && !entries)
+      entries = r.data_at;
+  REQUIRE(entries > 0);
+  index[entries + 8] = char(index[entries + 8] + 1);  // entry 0: time (8 bytes), offset (4)
+  writeFile(dir + "/index.bag", index);
+  CHECK_THAT(replayError(dir + "/index.bag"),
+             Catch::Contains("an index entry that names no message of its chunk"));
+  // A chunk info naming a position that is no chunk.
+  std::string info = good;
+  std::size_t chunk_pos = 0;
+  for (const RawRecord& r : rawRecords(good)) {
+    const std::size_t f = r.header.find("chunk_pos=");
+    if (f != std::string::npos) chunk_pos = r.at + 4 + f + 10;
+  }
+  REQUIRE(chunk_pos > 0);
+  info[chunk_pos] = char(info[chunk_pos] + 1);
+  writeFile(dir + "/info.bag", info);
+  CHECK_THAT(replayError(dir + "/info.bag"), Catch::Contains("a chunk info naming no chunk"));
+  // The undamaged bag still replays.
+  CHECK(replayError(dir + "/good.bag").empty());
 }

@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "bag_poses.h"
+#include "pedtrack/bag_check.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/replay_pacer.h"
@@ -32,6 +33,7 @@ class RosbagSource : public Sensor {
   explicit RosbagSource(const PluginContext& ctx)
       : file_(ctx.params.getString("file")), merge_window_(ctx.params.getDouble("merge_window")) {
     try {
+      checkBagStructure(file_);  // rosbag_storage trusts the lengths in the file
       bag_.open(file_, rosbag::bagmode::Read);
     } catch (const std::exception& e) {
       throw ConfigError("file: cannot open bag '" + file_ + "': " + oneLine(e.what()));
