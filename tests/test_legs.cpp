@@ -32,6 +32,20 @@ std::vector<gait::Sample> synthetic(double l0, double f, double phi_now, double 
   return s;
 }
 
+// A walker along +x at 1 m/s from x = -2, legs scissoring, seen from `sensor` for 2 s (confirmed),
+// then hidden for 1.5 s (until t = 3.5 s). Returns the id of the confirmed person, 0 if none.
+long walkThenHide(LegPeopleTracker& tr, const Eigen::Vector2d& sensor) {
+  for (int k = 0; k <= 20; ++k) {
+    const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+    tr.step(t, {{{x + lp / 2, 0.09}, 0.9, sensor, -1}, {{x - lp / 2, -0.09}, 0.9, sensor, -1}}, {});
+  }
+  long id = 0;
+  for (const PersonState& s : tr.people())
+    if (s.confirmed) id = s.id;
+  for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, {}, {});
+  return id;
+}
+
 }  // namespace
 
 TEST_CASE("the gait fit recovers known L0, f, phi and b", "[legs]") {
@@ -367,15 +381,8 @@ TEST_CASE("a confirmed walker lost behind others keeps their id when their legs 
     p.reidentify_speed = reidentify_speed;
     LegPeopleTracker tr(p);
     const Eigen::Vector2d sensor(0, -5);
-    long before = 0, after = 0;
-    for (int k = 0; k <= 20; ++k) {
-      const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
-      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, sensor, -1}, {{x - lp / 2, -0.09}, 0.9, sensor, -1}},
-              {});
-    }
-    for (const PersonState& s : tr.people())
-      if (s.confirmed) before = s.id;
-    for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, {}, {});
+    const long before = walkThenHide(tr, sensor);
+    long after = 0;
     for (int k = 0; k < 3; ++k) {
       const double t = 3.6 + 0.1 * k, y = 1.3 + 0.1 * k, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
       tr.step(t,
@@ -393,6 +400,46 @@ TEST_CASE("a confirmed walker lost behind others keeps their id when their legs 
   const auto [before_off, after_off] = run(0);  // off: a new, not yet confirmed person
   REQUIRE(before_off > 0);
   CHECK(after_off == 0);
+}
+
+TEST_CASE(
+    "a confirmed walker back from behind others by one leg keeps their id "
+    "(reidentify_leg_scans)",
+    "[legs]") {
+  // Walks along +x at 1 m/s for 2 s (confirmed), vanishes for 1.5 s (their leg objects are
+  // dropped after object_max_coast, 0.5 s), meanwhile turns left, and walks on along +y from
+  // (0.3, 1.4) with one leg seen, the other hidden behind it. That leg is 1.3 m from where
+  // the track expects their legs (the coasting velocity decays: it stops ~0.5 m on), beyond the
+  // one-leg re-acquisition gate (leg_gate + 0.6 m), and 1.4 m from where they were predicted,
+  // inside re-identification's radius (leg_gate + 1 m/s * 1.6 s). A lone leg never forms a pair:
+  // without reidentify_leg_scans the person stays lost.
+  auto run = [](int scans) {
+    LegPeopleParams p;
+    p.reidentify_leg_scans = scans;
+    LegPeopleTracker tr(p);
+    const Eigen::Vector2d sensor(0, -5);
+    const long before = walkThenHide(tr, sensor);
+    int first_back = -1;
+    Eigen::Vector2d at;
+    for (int k = 0; k < 10; ++k) {
+      const double t = 3.6 + 0.1 * k;
+      Eigen::Vector2d leg = pedtrack::test::walkerLegs(0.1 * k, M_PI / 2, 1.0).second;
+      leg += Eigen::Vector2d(0.3, 1.4);
+      tr.step(t, {{leg, 0.9, sensor, -1}}, {});
+      for (const PersonState& s : tr.people())
+        if (s.id == before && s.seen && first_back < 0) first_back = k, at = s.p;
+    }
+    return std::make_tuple(before, first_back, at);
+  };
+  const auto [before, first_back, at] = run(3);
+  REQUIRE(before > 0);
+  // From the leg's third scan on (reidentify_leg_scans), at the walker.
+  CHECK(first_back >= 2);
+  CHECK(first_back <= 6);
+  CHECK((at - Eigen::Vector2d(0.3, 1.4 + 0.1 * first_back)).norm() < 0.3);
+  const auto [before_off, back_off, at_off] = run(0);
+  REQUIRE(before_off > 0);
+  CHECK(back_off == -1);
 }
 
 TEST_CASE("a confirmed person is kept lost for as long as they were tracked (max_coast_confirmed)",

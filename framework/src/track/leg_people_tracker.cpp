@@ -228,6 +228,8 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       }
       (side == 0 ? l : r) = {true, best->pos()};
     }
+    if (!l.seen && !r.seen)
+      if (Object* o = reidentifyByOneLeg(P, t, is_static)) r = {true, o->pos()};
     P.seen = l.seen || r.seen;
     if (P.seen) {
       P.last_seen = t;
@@ -334,31 +336,79 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
                 people_.end());
 }
 
-// The confirmed person not seen this scan nearest to p, within leg_gate plus reidentify_speed
-// times their time unseen (at most reidentify_max) of where they were predicted (the velocity
+// Re-identification's radius for a confirmed person unseen since q.last_seen: leg_gate plus
+// reidentify_speed times the time unseen, at most reidentify_max more.
+double LegPeopleTracker::reidentifyRadius(const Person& q, double t) const {
+  return p_.pose.leg_gate + std::min(p_.reidentify_speed * (t - q.last_seen), p_.reidentify_max);
+}
+
+// How far p is from where a lost person may be now: where they were predicted (the velocity
 // decaying with coast_tau), where they were last seen (they stopped), or where their last
-// velocity would have carried them in at most max_coast (they walked on behind the people
-// hiding them); null if none. They may still hold coasting leg objects: a person whose prediction
-// ran off (a turn misread from a hidden leg sends it the wrong way at walking speed) loses their
-// legs to a new pair formed where they really are, and the track must follow it rather than coast
-// out beside it while the pair starts a second person.
+// velocity would have carried them in at most max_coast (they walked on behind the people hiding
+// them; plausible for a few seconds, not for the max_coast_confirmed a long-tracked person may
+// be kept lost).
+double LegPeopleTracker::lostDistance(const Person& q, double t, const Eigen::Vector2d& p) const {
+  const double walked_on = std::min(t - q.last_seen, p_.max_coast);
+  return std::min({(Eigen::Vector2d(q.est.x(), q.est.y()) - p).norm(), (q.seen_at - p).norm(),
+                   (q.seen_at + walked_on * q.seen_v - p).norm()});
+}
+
+// The confirmed person not seen this scan nearest to p (lostDistance), within their
+// reidentifyRadius; null if none. They may still hold coasting leg objects: a person whose
+// prediction ran off (a turn misread from a hidden leg sends it the wrong way at walking speed)
+// loses their legs to a new pair formed where they really are, and the track must follow it
+// rather than coast out beside it while the pair starts a second person.
 LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen::Vector2d& p) {
   if (p_.reidentify_speed <= 0) return nullptr;
   Person* best = nullptr;
   double best_d = INFINITY;
   for (auto& q : people_) {
     if (!q->confirmed || q->seen) continue;
-    const double radius =
-        p_.pose.leg_gate + std::min(p_.reidentify_speed * (t - q->last_seen), p_.reidentify_max);
-    const double unseen = t - q->last_seen;
-    // Walking on behind the people hiding them is plausible for a few seconds, not for the
-    // max_coast_confirmed a long-tracked person may be kept lost.
-    const double walked_on = std::min(unseen, p_.max_coast);
-    const double d =
-        std::min({(Eigen::Vector2d(q->est.x(), q->est.y()) - p).norm(), (q->seen_at - p).norm(),
-                  (q->seen_at + walked_on * q->seen_v - p).norm()});
-    if (d < radius && d < best_d) best = q.get(), best_d = d;
+    const double d = lostDistance(*q, t, p);
+    if (d < reidentifyRadius(*q, t) && d < best_d) best = q.get(), best_d = d;
   }
+  return best;
+}
+
+// A confirmed person with no leg object left (unseen for longer than object_max_coast) takes back
+// a lone walking leg within their re-identification radius: in a crowd a walker coming out from
+// behind others is often seen by one leg for many scans, the other hidden behind it or behind
+// someone else, and a single leg never forms a pair. The leg must be leg-like, walk (init_speed
+// to max_confirm_speed), have been tracked reidentify_leg_scans scans (a leg, not a flicker),
+// and stand alone: with a free leg-like partner within pair_distance, the pair re-identifies
+// (formPeople). The pose restarts at it, facing its motion, the hidden leg a step width to its
+// left (the scissoring legs' gait model then takes over). Returns the leg taken, or null.
+LegPeopleTracker::Object* LegPeopleTracker::reidentifyByOneLeg(
+    Person& q, double t, const std::function<bool(double, double)>& is_static) {
+  if (p_.reidentify_speed <= 0 || p_.reidentify_leg_scans <= 0) return nullptr;
+  if (!q.confirmed || q.left >= 0 || q.right >= 0) return nullptr;
+  const double radius = reidentifyRadius(q, t);
+  Object* best = nullptr;
+  double best_d = INFINITY;
+  for (auto& o : objects_) {
+    if (o->person >= 0 || o->det < 0 || o->detections < p_.reidentify_leg_scans || !legLike(*o))
+      continue;
+    if (o->speed() < p_.init_speed || o->speed() > p_.max_confirm_speed) continue;
+    if (is_static && is_static(o->pos().x(), o->pos().y())) continue;
+    const double d = lostDistance(q, t, o->pos());
+    if (d >= radius || d >= best_d) continue;
+    const bool paired = std::any_of(objects_.begin(), objects_.end(), [&](const auto& other) {
+      return other != o && other->person < 0 && other->det >= 0 && legLike(*other) &&
+             (other->pos() - o->pos()).norm() <= p_.pair_distance;
+    });
+    if (!paired) best = o.get(), best_d = d;
+  }
+  if (!best) return nullptr;
+  const Eigen::Vector2d v = best->g.x.segment<2>(2);
+  const double yaw = std::atan2(v.y(), v.x());
+  const Eigen::Vector2d hidden =
+      best->pos() + q.est.stepWidth() * Eigen::Vector2d(-v.y(), v.x()) / v.norm();
+  q.est = LegPoseEstimator(p_.pose);
+  q.est.start(t, best->pos(), hidden, yaw);
+  q.centres.clear();  // the way from where they were lost is no walk seen
+  q.backwards = 0;
+  q.right = best->id;
+  best->person = q.id;
   return best;
 }
 

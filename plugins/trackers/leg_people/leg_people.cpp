@@ -46,6 +46,7 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.merge_distance = s.getDouble("merge_distance");
   p.reidentify_speed = s.getDouble("reidentify_speed");
   p.reidentify_max = s.getDouble("reidentify_max");
+  p.reidentify_leg_scans = int(s.getInt("reidentify_leg_scans"));
   p.max_leg_spread = s.getDouble("max_leg_spread");
   p.flip_speed = s.getDouble("flip_speed");
   p.flip_time = s.getDouble("flip_time");
@@ -321,6 +322,10 @@ PluginDescriptor describe() {
                       "predicted (keeps their id through occlusions); 0: off"),
       ParamSpec::real("reidentify_max", def.reidentify_max, "m", 0, 100,
                       "... that radius grows by at most this much beyond leg_gate"),
+      ParamSpec::integer("reidentify_leg_scans", def.reidentify_leg_scans, "scans", 0, 1000,
+                         "a confirmed person with no leg left takes back a lone walking leg "
+                         "(no free leg-like partner within pair_distance) within that radius once "
+                         "it has been tracked this many scans; 0: off (pairs only)"),
       ParamSpec::real("merge_distance", def.merge_distance, "m", 0, 10,
                       "two people closer than this are one (bodies do not interpenetrate): the "
                       "tentative, else the one seen less recently, else the newer goes; two "
