@@ -442,6 +442,30 @@ TEST_CASE(
   CHECK(back_off == -1);
 }
 
+TEST_CASE("with init_speed 0 a still lone leg re-identifies a lost person at a finite place",
+          "[legs]") {
+  // A leg standing still has no direction of motion to face: the person keeps their facing
+  // (dividing by the leg's zero speed put the hidden leg, and so the person, at NaN).
+  LegPeopleParams p;
+  p.init_speed = 0;
+  LegPeopleTracker tr(p);
+  const Eigen::Vector2d sensor(0, -5);
+  const long id = walkThenHide(tr, sensor);
+  REQUIRE(id > 0);
+  bool back = false;
+  for (int k = 0; k < 5; ++k) {
+    tr.step(3.6 + 0.1 * k, {{{0.3, 1.4}, 0.9, sensor, -1}}, {});
+    for (const PersonState& s : tr.people())
+      if (s.id == id && s.seen) {
+        back = true;
+        CHECK(std::isfinite(s.p.x()));
+        CHECK(std::isfinite(s.p.y()));
+        CHECK(std::isfinite(s.yaw));
+      }
+  }
+  CHECK(back);
+}
+
 TEST_CASE("a confirmed person is kept lost for as long as they were tracked (max_coast_confirmed)",
           "[legs]") {
   // Walks along +x at 0.8 m/s for `walk` s, is hidden for 6 s (beyond max_coast, 3 s), and

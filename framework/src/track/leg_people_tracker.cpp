@@ -399,10 +399,12 @@ LegPeopleTracker::Object* LegPeopleTracker::reidentifyByOneLeg(
     if (!paired) best = o.get(), best_d = d;
   }
   if (!best) return nullptr;
+  // Facing the leg's motion; with init_speed set to 0 a leg may stand still, and the person
+  // keeps the facing they had.
   const Eigen::Vector2d v = best->g.x.segment<2>(2);
-  const double yaw = std::atan2(v.y(), v.x());
+  const double yaw = v.norm() > 1e-6 ? std::atan2(v.y(), v.x()) : q.est.yaw();
   const Eigen::Vector2d hidden =
-      best->pos() + q.est.stepWidth() * Eigen::Vector2d(-v.y(), v.x()) / v.norm();
+      best->pos() + q.est.stepWidth() * Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
   q.est = LegPoseEstimator(p_.pose);
   q.est.start(t, best->pos(), hidden, yaw);
   q.centres.clear();  // the way from where they were lost is no walk seen
