@@ -229,7 +229,8 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       (side == 0 ? l : r) = {true, best->pos()};
     }
     if (!l.seen && !r.seen)
-      if (Object* o = reidentifyByOneLeg(P, t, is_static)) r = {true, o->pos()};
+      if (Object* o = reidentifyByOneLeg(P, t, is_static))
+        (P.left == o->id ? l : r) = {true, o->pos()};
     P.seen = l.seen || r.seen;
     if (P.seen) {
       P.last_seen = t;
@@ -375,9 +376,13 @@ LegPeopleTracker::Person* LegPeopleTracker::lostPersonNear(double t, const Eigen
 // behind others is often seen by one leg for many scans, the other hidden behind it or behind
 // someone else, and a single leg never forms a pair. The leg must be leg-like, walk (init_speed
 // to max_confirm_speed), have been tracked reidentify_leg_scans scans (a leg, not a flicker),
-// and stand alone: with a free leg-like partner within pair_distance, the pair re-identifies
-// (formPeople). The pose restarts at it, facing its motion, the hidden leg a step width to its
-// left (the scissoring legs' gait model then takes over). Returns the leg taken, or null.
+// and stand alone: a free leg-like object within pair_distance makes a pair, left to formPeople
+// (re-identified there or a new person), and one on the static scene counts too (formPeople
+// never pairs with it, but a lone leg beside furniture re-identified a lost person on it: on
+// leg_tracker's positive_4 bag, 229 instead of 52 track rows near no labelled leg). The pose
+// restarts at it, facing its motion, the hidden leg a step width to its left (the scissoring legs'
+// gait model then takes over; W0 and the gait are learned afresh from there). Returns the leg
+// taken, or null. reidentify_speed = 0 turns this off too.
 LegPeopleTracker::Object* LegPeopleTracker::reidentifyByOneLeg(
     Person& q, double t, const std::function<bool(double, double)>& is_static) {
   if (p_.reidentify_speed <= 0 || p_.reidentify_leg_scans <= 0) return nullptr;
@@ -403,13 +408,14 @@ LegPeopleTracker::Object* LegPeopleTracker::reidentifyByOneLeg(
   // keeps the facing they had.
   const Eigen::Vector2d v = best->g.x.segment<2>(2);
   const double yaw = v.norm() > 1e-6 ? std::atan2(v.y(), v.x()) : q.est.yaw();
+  // The hidden leg a step width aside: the person's, as learned before they were lost.
   const Eigen::Vector2d hidden =
       best->pos() + q.est.stepWidth() * Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
   q.est = LegPoseEstimator(p_.pose);
   q.est.start(t, best->pos(), hidden, yaw);
   q.centres.clear();  // the way from where they were lost is no walk seen
   q.backwards = 0;
-  q.right = best->id;
+  (q.est.left() == best->pos() ? q.left : q.right) = best->id;
   best->person = q.id;
   return best;
 }

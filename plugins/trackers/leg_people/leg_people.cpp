@@ -319,13 +319,16 @@ PluginDescriptor describe() {
       ParamSpec::real("reidentify_speed", def.reidentify_speed, "m/s", 0, 100,
                       "a confirmed person lost from sight takes back a new leg pair within "
                       "leg_gate plus this speed times their time unseen of where they were "
-                      "predicted (keeps their id through occlusions); 0: off"),
+                      "predicted (keeps their id through occlusions), or a lone leg "
+                      "(reidentify_leg_scans); 0: off, both"),
       ParamSpec::real("reidentify_max", def.reidentify_max, "m", 0, 100,
                       "... that radius grows by at most this much beyond leg_gate"),
-      ParamSpec::integer("reidentify_leg_scans", def.reidentify_leg_scans, "scans", 0, 1000,
-                         "a confirmed person with no leg left takes back a lone walking leg "
-                         "(no free leg-like partner within pair_distance) within that radius once "
-                         "it has been tracked this many scans; 0: off (pairs only)"),
+      ParamSpec::integer(
+          "reidentify_leg_scans", def.reidentify_leg_scans, "scans", 0, 1000,
+          "a confirmed person with no leg left takes back a lone walking leg "
+          "(off the static scene, no free leg-like object, furniture included, within "
+          "pair_distance) within that radius once it has been tracked this many "
+          "scans; 0: off (pairs only)"),
       ParamSpec::real("merge_distance", def.merge_distance, "m", 0, 10,
                       "two people closer than this are one (bodies do not interpenetrate): the "
                       "tentative, else the one seen less recently, else the newer goes; two "

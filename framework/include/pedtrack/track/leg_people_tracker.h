@@ -108,7 +108,8 @@ struct LegPeopleParams {
   /// m/s: a confirmed person lost from sight (neither leg tracked) takes back a new leg pair
   /// that forms within leg_gate plus this speed times the time unseen of where they were
   /// predicted, instead of the pair starting a new tentative person (a walker reappearing from
-  /// behind someone keeps their id and needs no second confirmation). 0: off.
+  /// behind someone keeps their id and needs no second confirmation); or a lone leg
+  /// (reidentify_leg_scans). 0: off, both.
   double reidentify_speed = 1.0;
   double reidentify_max = 2.0;  ///< m, ... the radius grows by at most this much
   /// scans: a confirmed person with no leg left takes back a lone walking leg within that
