@@ -141,6 +141,38 @@ TEST_CASE("garbage bytes between entries: error, or skipped and resynchronised",
   CHECK(skip.entries_skipped == 1);
 }
 
+TEST_CASE("a sensory frame claiming a billion observations: error, or skipped", "[rawlog]") {
+  // MRPT would size the frame's deque to the count before reading one observation (16 GB for
+  // 10^9); the count is checked in the entry's header first.
+  PlainLog log = plainSena();
+  std::size_t bad = 0;
+  for (std::size_t k = 100; k < log.is_frame.size() && !bad; ++k)
+    if (log.is_frame[k]) bad = k;
+  REQUIRE(bad > 0);
+  const std::string name = "mrpt::obs::CSensoryFrame";
+  const std::size_t at = log.offsets[bad];
+  REQUIRE(static_cast<unsigned char>(log.bytes[at]) == (0x80 | name.size()));
+  REQUIRE(log.bytes.compare(at + 1, name.size(), name) == 0);
+  REQUIRE(log.bytes[at + 1 + name.size()] == 2);  // version 2: the count comes next
+  log.bytes.replace(at + 2 + name.size(), 4, "\x00\xCA\x9A\x3B", 4);  // 10^9, little-endian
+  const std::string dir = freshDir("rawlog_huge_count");
+  writeFile(dir + "/count.rawlog", log.bytes);
+  const auto r = runHost({"run", PEDTRACK_SOURCE_DIR "/configs/replay.ini", "--input",
+                          dir + "/count.rawlog", "--out", dir + "/out", "-q"});
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output,
+             Catch::Contains("entry " + std::to_string(bad) + " (byte " + std::to_string(at) +
+                             "): unreadable: a " + name + " of 1000000000 items (at most 65536)"));
+  CHECK(jsonNumber(readFile(dir + "/out/run.json"), "frames_processed") == framesBefore(log, bad));
+
+  const auto skip = replay(dir + "/count.rawlog", "skip_bad = true\n");
+  CHECK(skip.status == "ok");
+  // Nothing lost: resynchronising finds the broken frame's scan and reads it on its own; the
+  // frame's header and what follows its scan are the two entries skipped.
+  CHECK(skip.frames_read == 225);
+  CHECK(skip.entries_skipped == 2);
+}
+
 TEST_CASE("plain and gz-compressed logs give the same frames", "[rawlog]") {
   const PlainLog log = plainSena();
   const std::string dir = freshDir("rawlog_plain_vs_gz");
@@ -178,4 +210,13 @@ TEST_CASE("a rawlog found by fuzzing (a string length of 1.9 GB) ends in one cle
   // before it finds the file too short: a memory spike, then this error. The spike is MRPT's
   // (see scripts/fuzz.sh); the run must still end cleanly.
   checkRawlogRegression("huge_string_length.rawlog");
+}
+
+TEST_CASE(
+    "a rawlog found by fuzzing (a sensory frame of 976,909,154 observations) ends in one "
+    "clear error",
+    "[rawlog][fuzz]") {
+  // MRPT grew the frame's deque block by block towards 15 GB (an out-of-memory under the
+  // fuzzer; on a robot, whatever memory the machine has).
+  checkRawlogRegression("huge_frame_count.rawlog");
 }

@@ -82,6 +82,16 @@ bool EntryStream::atEnd() {
   return false;
 }
 
+std::vector<std::uint8_t> EntryStream::peek(std::size_t count) {
+  std::vector<std::uint8_t> out(count);
+  out.resize(Read(out.data(), count));
+  // Given back as if never read: served again first, not part of the entry yet.
+  pending_.insert(pending_.begin(), out.begin(), out.end());
+  position_ -= out.size();
+  entry_.resize(entry_.size() - out.size());
+  return out;
+}
+
 size_t EntryStream::Write(const void*, size_t) {
   throw std::logic_error("EntryStream is read-only");
 }

@@ -27,6 +27,8 @@ class EntryStream : public mrpt::io::CStream {
   bool resync();
   /// True when no byte is left (a failed entry that reached it was truncated).
   bool atEnd();
+  /// Up to `count` next bytes, left unread (fewer at the end of the file).
+  std::vector<std::uint8_t> peek(std::size_t count);
 
   size_t Read(void* buffer, size_t count) override;
   size_t Write(const void*, size_t) override;
