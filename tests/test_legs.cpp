@@ -32,19 +32,23 @@ std::vector<gait::Sample> synthetic(double l0, double f, double phi_now, double 
   return s;
 }
 
-// A walker along +x at 1 m/s from x = -2, legs scissoring, seen from `sensor` for 2 s (confirmed),
-// then hidden for 1.5 s (until t = 3.5 s). Returns the id of the confirmed person, 0 if none.
-long walkThenHide(LegPeopleTracker& tr, const Eigen::Vector2d& sensor) {
-  for (int k = 0; k <= 20; ++k) {
-    const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
-    tr.step(t, {{{x + lp / 2, 0.09}, 0.9, sensor, -1}, {{x - lp / 2, -0.09}, 0.9, sensor, -1}}, {});
-  }
+// A tracker that saw a walker along +x at 1 m/s from x = -2, legs scissoring, from `sensor` for
+// 2 s (confirmed, `id`; 0 if not), then nothing for 1.5 s (until t = 3.5 s).
+struct HiddenWalker {
+  const Eigen::Vector2d sensor{0, -5};
+  LegPeopleTracker tr;
   long id = 0;
-  for (const PersonState& s : tr.people())
-    if (s.confirmed) id = s.id;
-  for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, {}, {});
-  return id;
-}
+  explicit HiddenWalker(const LegPeopleParams& p) : tr(p) {
+    for (int k = 0; k <= 20; ++k) {
+      const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, sensor, -1}, {{x - lp / 2, -0.09}, 0.9, sensor, -1}},
+              {});
+    }
+    for (const PersonState& s : tr.people())
+      if (s.confirmed) id = s.id;
+    for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, {}, {});
+  }
+};
 
 }  // namespace
 
@@ -379,20 +383,18 @@ TEST_CASE("a confirmed walker lost behind others keeps their id when their legs 
   auto run = [](double reidentify_speed) {
     LegPeopleParams p;
     p.reidentify_speed = reidentify_speed;
-    LegPeopleTracker tr(p);
-    const Eigen::Vector2d sensor(0, -5);
-    const long before = walkThenHide(tr, sensor);
+    HiddenWalker w(p);
     long after = 0;
     for (int k = 0; k < 3; ++k) {
       const double t = 3.6 + 0.1 * k, y = 1.3 + 0.1 * k, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
-      tr.step(t,
-              {{{0.3 - 0.09, y + lp / 2}, 0.9, sensor, -1},
-               {{0.3 + 0.09, y - lp / 2}, 0.9, sensor, -1}},
-              {});
+      w.tr.step(t,
+                {{{0.3 - 0.09, y + lp / 2}, 0.9, w.sensor, -1},
+                 {{0.3 + 0.09, y - lp / 2}, 0.9, w.sensor, -1}},
+                {});
     }
-    for (const PersonState& s : tr.people())
+    for (const PersonState& s : w.tr.people())
       if (s.confirmed && s.seen) after = s.id;
-    return std::make_pair(before, after);
+    return std::make_pair(w.id, after);
   };
   const auto [before, after] = run(1.0);
   REQUIRE(before > 0);
@@ -416,20 +418,18 @@ TEST_CASE(
   auto run = [](int scans) {
     LegPeopleParams p;
     p.reidentify_leg_scans = scans;
-    LegPeopleTracker tr(p);
-    const Eigen::Vector2d sensor(0, -5);
-    const long before = walkThenHide(tr, sensor);
+    HiddenWalker w(p);
     int first_back = -1;
     Eigen::Vector2d at;
     for (int k = 0; k < 10; ++k) {
       const double t = 3.6 + 0.1 * k;
       Eigen::Vector2d leg = pedtrack::test::walkerLegs(0.1 * k, M_PI / 2, 1.0).second;
       leg += Eigen::Vector2d(0.3, 1.4);
-      tr.step(t, {{leg, 0.9, sensor, -1}}, {});
-      for (const PersonState& s : tr.people())
-        if (s.id == before && s.seen && first_back < 0) first_back = k, at = s.p;
+      w.tr.step(t, {{leg, 0.9, w.sensor, -1}}, {});
+      for (const PersonState& s : w.tr.people())
+        if (s.id == w.id && s.seen && first_back < 0) first_back = k, at = s.p;
     }
-    return std::make_tuple(before, first_back, at);
+    return std::make_tuple(w.id, first_back, at);
   };
   const auto [before, first_back, at] = run(3);
   REQUIRE(before > 0);
@@ -448,15 +448,13 @@ TEST_CASE("with init_speed 0 a still lone leg re-identifies a lost person at a f
   // (dividing by the leg's zero speed put the hidden leg, and so the person, at NaN).
   LegPeopleParams p;
   p.init_speed = 0;
-  LegPeopleTracker tr(p);
-  const Eigen::Vector2d sensor(0, -5);
-  const long id = walkThenHide(tr, sensor);
-  REQUIRE(id > 0);
+  HiddenWalker w(p);
+  REQUIRE(w.id > 0);
   bool back = false;
   for (int k = 0; k < 5; ++k) {
-    tr.step(3.6 + 0.1 * k, {{{0.3, 1.4}, 0.9, sensor, -1}}, {});
-    for (const PersonState& s : tr.people())
-      if (s.id == id && s.seen) {
+    w.tr.step(3.6 + 0.1 * k, {{{0.3, 1.4}, 0.9, w.sensor, -1}}, {});
+    for (const PersonState& s : w.tr.people())
+      if (s.id == w.id && s.seen) {
         back = true;
         CHECK(std::isfinite(s.p.x()));
         CHECK(std::isfinite(s.p.y()));
