@@ -1,11 +1,14 @@
 // Classifier cores (classify/): P2's Mahalanobis k-NN and quality Q, the RBF SVM and its Platt
 // calibration, model files, ROC and AUC. Numbers are derived by hand in the comments.
+#include <zlib.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 
 #include "pedtrack/classify/knn.h"
 #include "pedtrack/classify/model_file.h"
+#include "pedtrack/classify/model_text.h"
 #include "pedtrack/classify/roc.h"
 #include "pedtrack/classify/svm.h"
 #include "pedtrack/errors.h"
@@ -234,6 +237,20 @@ TEST_CASE("train, save, load: identical predictions; bad model files are one-lin
   test::writeFile(dir + "/v9.yml", v2);
   expectError(dir + "/v9.yml", "version 9");
   expectError(dir + "/missing.yml", "not found");
+  // A gzip-compressed model (FileStorage reads .gz, so pedtrack does) scores as the plain one.
+  {
+    gzFile gz = gzopen((dir + "/k.yml.gz").c_str(), "wb");
+    const std::string k_text = test::readFile(dir + "/k.yml");
+    REQUIRE(gzwrite(gz, k_text.data(), unsigned(k_text.size())) == int(k_text.size()));
+    gzclose(gz);
+    std::vector<double> kz;
+    loadScorer(dir + "/k.yml.gz")->score(q.data(), 50, kz);
+    CHECK(kz == ks);
+    // ... and a broken one is the same one-line error.
+    const std::string z = test::readFile(dir + "/k.yml.gz");
+    test::writeFile(dir + "/cut.yml.gz", z.substr(0, z.size() / 2));
+    expectError(dir + "/cut.yml.gz", "model");
+  }
   try {
     loadKnnModel(dir + "/s.yml");
     FAIL("an SVM loaded as k-NN");
@@ -301,4 +318,56 @@ TEST_CASE("a model file found by fuzzing (control bytes) is refused before parsi
   CHECK_THROWS_WITH(pedtrack::classify::loadScorer(path),
                     Catch::Contains("control_bytes_hang.yml: not a readable model file (control "
                                     "byte at offset 10)"));
+}
+
+TEST_CASE("model files found by fuzzing (a second YAML document) are refused before parsing",
+          "[classify][fuzz]") {
+  // fuzz/regressions/fuzz_model: after a document's root OpenCV 4.6's parser skips three
+  // characters for the '---' or '...' it assumes, then loops for good on a '-' that is not
+  // '---' (the fuzzer's 20 s timeout). The first has its root on the '---' line, the second a
+  // '...' after the root map.
+  const std::string dir = std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/";
+  CHECK_THROWS_WITH(loadScorer(dir + "second_document_hang.yml"),
+                    Catch::Contains("second_document_hang.yml: not a readable model file (line 2: "
+                                    "content after '---'"));
+  CHECK_THROWS_WITH(loadScorer(dir + "marker_after_root_hang.yml"),
+                    Catch::Contains("marker_after_root_hang.yml: not a readable model file (line "
+                                    "4: a document marker ('---' or '...') after the root"));
+}
+
+TEST_CASE("a model's text must have the layout pedtrack writes: one document, a root map") {
+  // Every shipped model has it.
+  for (const char* name :
+       {"legs_knn", "legs_svm", "person3d_knn", "person3d_svm", "torso_knn", "torso_svm"}) {
+    const std::string path = std::string(PEDTRACK_SOURCE_DIR) + "/models/" + name + ".yml";
+    CHECK(modelTextProblem(test::readFile(path)) == "");
+  }
+  const std::string head = "%YAML:1.0\n---\n";
+  // Comments, blank lines, indented values and CRLF line ends are all fine.
+  CHECK(modelTextProblem(head + "# a comment\n\nformat: x\nsvm:\n  a: [ 1, 2,\n    3 ]\n") == "");
+  CHECK(modelTextProblem("%YAML:1.0\r\n---\r\nformat: x\r\nkind: svm\r\n") == "");
+  CHECK(modelTextProblem("%YAML:1.0\nformat: x\n") == "");  // '---' may be left out
+  // XML and JSON are not pedtrack models (and their parsers are not read at all).
+  CHECK(modelTextProblem("<?xml version=\"1.0\"?>\n<opencv_storage/>\n") ==
+        "not a pedtrack model file (it does not start with '%YAML')");
+  CHECK(modelTextProblem("{\"format\": 1}\n") ==
+        "not a pedtrack model file (it does not start with '%YAML')");
+  CHECK(modelTextProblem(head + "format: x\x01\n") == "control byte at offset 23");
+  CHECK(modelTextProblem(head + "--- \nformat: x\n") ==
+        "line 3: a second '---' (a model file is "
+        "one document)");
+  CHECK(modelTextProblem("%YAML:1.0\n--- {format: x}\n") ==
+        "line 2: content after '---' (a model file's root is a map on the lines below)");
+  CHECK(modelTextProblem(head + "  format: x\n") ==
+        "line 3: the root is indented (a model file's root is a map at column 0)");
+  CHECK(modelTextProblem(head + "- format\n") == "line 3: the root is not a map of keys");
+  CHECK(modelTextProblem(head + "[format]\n") == "line 3: the root is not a map of keys");
+  CHECK(modelTextProblem(head + "format: x\n...\n") ==
+        "line 4: a document marker ('---' or '...') after the root (a model file is one "
+        "document)");
+  CHECK(modelTextProblem(head + "format: x\n---\nkind: svm\n") ==
+        "line 4: a document marker ('---' or '...') after the root (a model file is one "
+        "document)");
+  // A marker inside a value (not at a line's start) is text.
+  CHECK(modelTextProblem(head + "format: x\ncommand: a --- b ...\n") == "");
 }

@@ -3,10 +3,9 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <opencv2/core.hpp>
 
+#include "pedtrack/classify/model_text.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/text.h"
 
@@ -100,31 +99,17 @@ std::string badMatrix(const cv::FileNode& n, const std::string& at) {
   return "";
 }
 
-// The offset of the first C0 control byte other than tab, LF and CR in a plain-text file, or
-// -1. YAML and XML forbid them and pedtrack never writes them, and OpenCV 4.6's YAML parser can
-// loop for good on some (found by fuzz_model), so such a file is refused before it is parsed.
-// A gzip-compressed model (.gz, which FileStorage also reads) is binary and not checked.
-long firstControlByte(const std::string& path) {
-  if (path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0) return -1;
-  std::ifstream in(path, std::ios::binary);
-  long offset = 0;
-  for (std::istreambuf_iterator<char> it(in), end; it != end; ++it, ++offset) {
-    const auto c = static_cast<unsigned char>(*it);
-    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') return offset;
-  }
-  return -1;
-}
-
 class ModelReader {
  public:
   ModelReader(const std::string& path, const std::string& want_kind) : path_(path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
       throw ConfigError(path + ": model file not found");
-    if (const long at = firstControlByte(path); at >= 0)
-      fail("not a readable model file (control byte at offset " + std::to_string(at) + ")");
+    // Parsed from the very text that was checked (readModelText) rather than reopened by name.
+    const std::string text = readModelText(path);
     try {
-      fs_.open(path, cv::FileStorage::READ | cv::FileStorage::FORMAT_AUTO);
+      fs_.open(text,
+               cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
     } catch (const cv::Exception& e) {
       fail("not a readable model file (" + oneLine(e.err) + ")");
     }
