@@ -371,3 +371,43 @@ TEST_CASE("a model's text must have the layout pedtrack writes: one document, a 
   // A marker inside a value (not at a line's start) is text.
   CHECK(modelTextProblem(head + "format: x\ncommand: a --- b ...\n") == "");
 }
+
+TEST_CASE("model files whose counts would size OpenCV's allocations are refused before it reads",
+          "[classify][fuzz]") {
+  // fuzz/regressions/fuzz_model/matrix_data_key_mangled.yml: class_labels' "data" key mangled
+  // (so the matrix was not checked) and its "rows: (2", which OpenCV reads as INT_MAX: 8 GB.
+  const std::string reg = std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/";
+  CHECK_THROWS_WITH(loadScorer(reg + "matrix_data_key_mangled.yml"),
+                    Catch::Contains("matrix_data_key_mangled.yml: matrix 'svm.class_labels': rows "
+                                    "× cols do not match its data"));
+  // SVM::read allocates support vectors × var_count floats and sv_count weights and indices
+  // before it reads them: each count is checked against the data first.
+  const std::string dir = test::freshDir("classify_svm_counts");
+  const std::string good =
+      test::readFile(std::string(PEDTRACK_SOURCE_DIR) + "/models/torso_svm.yml");
+  auto patched = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    REQUIRE(t.find(from) != std::string::npos);
+    t.replace(t.find(from), from.size(), to);
+    const std::string path = dir + "/m.yml";
+    test::writeFile(path, t);
+    return path;
+  };
+  CHECK_THROWS_WITH(loadScorer(patched("var_count: 4", "var_count: 2147483647")),
+                    Catch::Contains("bad 'svm' (var_count is not the features' count)"));
+  CHECK_THROWS_WITH(loadScorer(patched("class_count: 2", "class_count: 65537")),
+                    Catch::Contains("bad 'svm' (class_count is not 2)"));
+  CHECK_THROWS_WITH(loadScorer(patched("sv_total: 799", "sv_total: 800")),
+                    Catch::Contains("bad 'svm' (sv_total does not match support_vectors)"));
+  CHECK_THROWS_WITH(loadScorer(patched("sv_count: 799", "sv_count: 2000000000")),
+                    Catch::Contains("bad 'svm' (the decision function's sv_count, alpha and index "
+                                    "do not agree)"));
+  CHECK_THROWS_WITH(loadScorer(patched("sv_count: 799", "sv_count: -5")),
+                    Catch::Contains("bad 'svm' (the decision function's sv_count"));
+  CHECK_THROWS_WITH(loadScorer(patched("      dt: i\n", "      dt: i\n      sizes: [ 9, 9 ]\n")),
+                    Catch::Contains("matrix 'svm.class_labels': rows × cols do not match"));
+  CHECK_THROWS_WITH(loadScorer(patched("      dt: i\n", "      dt: \"1000i\"\n")),
+                    Catch::Contains("matrix 'svm.class_labels': rows × cols do not match"));
+  // The file itself loads.
+  CHECK_NOTHROW(loadScorer(patched("sv_total: 799", "sv_total: 799")));
+}

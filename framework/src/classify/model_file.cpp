@@ -67,22 +67,23 @@ Eigen::MatrixXd toEigen(const cv::Mat& m) {
   return out;
 }
 
-// An open, checked model file: format, version, kind and end marker verified.
-// Every `!!opencv-matrix` under `n` (a map with rows, cols, dt and data) must have as many data
-// values as rows × cols × channels, with rows and cols whole numbers of at most 10^7: OpenCV's
-// reader allocates rows × cols first, so a corrupt "rows" asked it for gigabytes (found by
-// fuzz_model). Returns the first bad matrix's key path, "" when all are sound.
+// Every matrix under `n` (a map with a "dt", which is what OpenCV's reader takes for one) must
+// have whole-number rows and cols of at most 10^7, 1–512 channels, no "sizes" (pedtrack writes
+// 2-D matrices only) and as many data values as rows × cols × channels: OpenCV's reader
+// allocates rows × cols first, so a corrupt "rows" asked it for gigabytes (found by fuzz_model,
+// twice: a "rows: ~", and a matrix whose "data" key was mangled, so that it was not checked and
+// its "rows: (2" read as INT_MAX). Returns the first bad matrix's key path, "" when all are sound.
 std::string badMatrix(const cv::FileNode& n, const std::string& at) {
-  if (n.isMap() && !n["rows"].empty() && !n["cols"].empty() && !n["dt"].empty() &&
-      !n["data"].empty()) {
+  if (n.isMap() && !n["dt"].empty()) {
     const cv::FileNode rows = n["rows"], cols = n["cols"], dt = n["dt"], data = n["data"];
-    if (!rows.isInt() || !cols.isInt() || !dt.isString() || !data.isSeq()) return at;
+    if (!rows.isInt() || !cols.isInt() || !dt.isString() || !data.isSeq() || !n["sizes"].empty())
+      return at;
     const long r = int(rows), c = int(cols);
     const std::string type = std::string(dt);
     const long channels = !type.empty() && std::isdigit(static_cast<unsigned char>(type[0]))
                               ? std::strtol(type.c_str(), nullptr, 10)
                               : 1;
-    if (r < 0 || c < 0 || r > 10000000 || c > 10000000 || channels < 1 ||
+    if (r < 0 || c < 0 || r > 10000000 || c > 10000000 || channels < 1 || channels > 512 ||
         r * c * channels != static_cast<long>(data.size()))
       return at;
     return "";
@@ -99,6 +100,34 @@ std::string badMatrix(const cv::FileNode& n, const std::string& at) {
   return "";
 }
 
+// The first count in an SVM node (pedtrack's: two classes, `dims` features) that OpenCV's
+// SVM::read would size memory by without checking it against the data, "" when all agree. It
+// allocates support vectors × var_count floats and, per decision function, sv_count weights and
+// indices, so a corrupt var_count or sv_count asked for gigabytes.
+std::string badSvmCount(const cv::FileNode& svm, int dims) {
+  const auto whole = [](const cv::FileNode& v, long lo, long hi) {
+    return v.isInt() && int(v) >= lo && int(v) <= hi;
+  };
+  if (!whole(svm["var_count"], dims, dims)) return "var_count is not the features' count";
+  if (!whole(svm["class_count"], 2, 2)) return "class_count is not 2";
+  const cv::FileNode sv = svm["support_vectors"];
+  if (!sv.isSeq() || !whole(svm["sv_total"], 1, long(sv.size())))
+    return "sv_total does not match support_vectors";
+  const long sv_total = int(svm["sv_total"]);
+  const cv::FileNode uncompressed = svm["uncompressed_sv_total"];
+  if (!uncompressed.empty() &&
+      !whole(uncompressed, 0, long(svm["uncompressed_support_vectors"].size())))
+    return "uncompressed_sv_total does not match uncompressed_support_vectors";
+  const cv::FileNode functions = svm["decision_functions"];
+  if (!functions.isSeq() || functions.size() != 1) return "not one decision function";
+  const cv::FileNode f = functions[0];
+  if (!whole(f["sv_count"], 0, sv_total) || f["alpha"].size() != std::size_t(int(f["sv_count"])) ||
+      f["index"].size() != std::size_t(int(f["sv_count"])))
+    return "the decision function's sv_count, alpha and index do not agree";
+  return "";
+}
+
+// An open, checked model file: format, version, kind and end marker verified.
 class ModelReader {
  public:
   ModelReader(const std::string& path, const std::string& want_kind) : path_(path) {
@@ -231,6 +260,8 @@ LoadedSvm loadSvmModel(const std::string& path) {
   for (double s : z.scale)
     if (!(s > 0)) r.fail("'scale' has a value that is not positive");
   PlattSigmoid platt{double(r.node("platt_a")), double(r.node("platt_b"))};
+  if (const std::string bad = badSvmCount(r.node("svm"), d); !bad.empty())
+    r.fail("bad 'svm' (" + bad + ")");
   auto svm = cv::ml::SVM::create();
   try {
     svm->read(r.node("svm"));
