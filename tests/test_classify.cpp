@@ -301,12 +301,15 @@ TEST_CASE("a model file found by fuzzing (support vector indices past the vector
 
 TEST_CASE("a model file found by fuzzing (a matrix with no rows) is refused before allocating",
           "[classify][fuzz]") {
-  // fuzz/regressions/fuzz_model: "rows: ~" made OpenCV's reader allocate 17 GB.
+  // fuzz/regressions/fuzz_model: "rows: ~" made OpenCV's reader allocate 17 GB. The matrix check
+  // caught it first; now the line forms do ('~' is no value pedtrack writes), and the matrix
+  // check is tested on its own below ("... refused before OpenCV reads").
   const std::string path =
       std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/matrix_rows_missing.yml";
-  CHECK_THROWS_WITH(pedtrack::classify::loadScorer(path),
-                    Catch::Contains("matrix_rows_missing.yml: matrix 'svm.class_weights': rows × "
-                                    "cols do not match its data"));
+  CHECK_THROWS_WITH(
+      pedtrack::classify::loadScorer(path),
+      Catch::Contains("matrix_rows_missing.yml: not a readable model file (line 38: "
+                      "a value that is not a number, word, string, tag or [ ] / { })"));
 }
 
 TEST_CASE("a model file found by fuzzing (control bytes) is refused before parsing",
@@ -370,16 +373,42 @@ TEST_CASE("a model's text must have the layout pedtrack writes: one document, a 
         "document)");
   // A marker inside a value (not at a line's start) is text.
   CHECK(modelTextProblem(head + "format: x\ncommand: a --- b ...\n") == "");
+  // What OpenCV's writer leaves unquoted is a value; a quoted string may hold anything.
+  CHECK(modelTextProblem(head + "command: /usr/bin/pedtrack train (a;b) -x +1\nn: -.Inf\n"
+                                "s: \"a: [ {\\\" b\"\n") == "");
+  // Nesting with no indentation is refused (OpenCV recurses once per level without a limit:
+  // fuzz_model's 6,000 '-' overflowed the stack in pedtrack's walk over the tree, 65,000 '[' in
+  // OpenCV's parser).
+  CHECK(modelTextProblem(head + "kind:-----\n") ==
+        "line 3: a value that is not a number, word, string, tag or [ ] / { }");
+  CHECK(modelTextProblem(head + "a:\n  - - b\n") ==
+        "line 4: a value that is not a number, word, string, tag or [ ] / { }");
+  CHECK(modelTextProblem(head + "a: b: c\n") == "line 3: more after the value");
+  CHECK(modelTextProblem(head + "a: " + std::string(17, '[') + "\n") ==
+        "line 3: [ ] or { } nested more than 16 deep");
+  CHECK(modelTextProblem(head + "a: [ 1,\n  [ 2 ] ] ]\n") == "line 4: more after the value");
+  CHECK(modelTextProblem(head + "a: [ 1,\n  \"b\" ]\n") ==
+        "line 4: a quote or '#' inside [ ] or { }");
+  CHECK(modelTextProblem(head + "a: [ [ 1, # ]\n  ] ]\n") ==
+        "line 3: a quote or '#' inside [ ] or { }");
+  CHECK(modelTextProblem(head + "a:\n" + std::string(65, ' ') + "b: 1\n") ==
+        "line 4: indented more than 64 columns");
+  CHECK(modelTextProblem(head + "a: [ 1, 2 ] x\n") == "line 3: more after the value");
+  CHECK(modelTextProblem(head + "a: \"open\n") == "line 3: a string without its closing '\"'");
+  const std::string reg = std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/";
+  CHECK(modelTextProblem(test::readFile(reg + "nested_sequences_stack_overflow.yml")) ==
+        "line 5: a value that is not a number, word, string, tag or [ ] / { }");
 }
 
 TEST_CASE("model files whose counts would size OpenCV's allocations are refused before it reads",
           "[classify][fuzz]") {
   // fuzz/regressions/fuzz_model/matrix_data_key_mangled.yml: class_labels' "data" key mangled
   // (so the matrix was not checked) and its "rows: (2", which OpenCV reads as INT_MAX: 8 GB.
+  // Its line 14 (a mangled key) is now refused first; the matrix itself is patched in below.
   const std::string reg = std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/";
   CHECK_THROWS_WITH(loadScorer(reg + "matrix_data_key_mangled.yml"),
-                    Catch::Contains("matrix_data_key_mangled.yml: matrix 'svm.class_labels': rows "
-                                    "× cols do not match its data"));
+                    Catch::Contains("matrix_data_key_mangled.yml: not a readable model file (line "
+                                    "14: a key without ':')"));
   // SVM::read allocates support vectors × var_count floats and sv_count weights and indices
   // before it reads them: each count is checked against the data first.
   const std::string dir = test::freshDir("classify_svm_counts");
@@ -408,6 +437,17 @@ TEST_CASE("model files whose counts would size OpenCV's allocations are refused 
                     Catch::Contains("matrix 'svm.class_labels': rows × cols do not match"));
   CHECK_THROWS_WITH(loadScorer(patched("      dt: i\n", "      dt: \"1000i\"\n")),
                     Catch::Contains("matrix 'svm.class_labels': rows × cols do not match"));
+  // The fuzzer's matrix, in lines pedtrack could have written: "data" renamed, "rows" a word
+  // (read as INT_MAX); and "rows: ~" (read as 0 × 1 against 2 values).
+  const std::string labels = "      rows: 2\n      cols: 1\n      dt: i\n      data: [ 0, 1 ]\n";
+  CHECK_THROWS_WITH(
+      loadScorer(
+          patched(labels, "      rows: x\n      cols: 1\n      dt: i\n      dta: [ 0, 1 ]\n")),
+      Catch::Contains("matrix 'svm.class_labels': rows × cols do not match its data"));
+  CHECK_THROWS_WITH(
+      loadScorer(
+          patched(labels, "      rows: x\n      cols: 1\n      dt: i\n      data: [ 0, 1 ]\n")),
+      Catch::Contains("matrix 'svm.class_labels': rows × cols do not match its data"));
   // The file itself loads.
   CHECK_NOTHROW(loadScorer(patched("sv_total: 799", "sv_total: 799")));
 }
