@@ -12,6 +12,7 @@
 
 #include "pedtrack/bag_check.h"
 #include "pedtrack/errors.h"
+#include "pedtrack/ros_checked_message.h"
 #include "pedtrack/text.h"
 
 namespace pedtrack::cli {
@@ -85,13 +86,13 @@ BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
                       rosbag::TopicQuery(std::vector<std::string>{out.scan_topic, labels_topic}));
     for (const rosbag::MessageInstance& m : view) {
       if (m.getTopic() == labels_topic) {
-        auto a = m.instantiate<geometry_msgs::PoseArray>();
+        auto a = checkedInstantiate<geometry_msgs::PoseArray>(m);
         if (!a) continue;
         if (a->header.stamp.isZero())
           pending = toObjects(*a);
         else
           stamped[a->header.stamp.toSec()] = toObjects(*a);
-      } else if (auto s = m.instantiate<sensor_msgs::LaserScan>()) {
+      } else if (auto s = checkedInstantiate<sensor_msgs::LaserScan>(m)) {
         unstamped_for_scan.emplace_back(s->header.stamp.toSec(), std::move(pending));
         pending.clear();
       }

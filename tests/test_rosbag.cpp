@@ -6,6 +6,7 @@
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include <catch2/catch.hpp>
@@ -16,6 +17,8 @@
 #include <tuple>
 
 #include "pedtrack/pipeline.h"
+#include "pedtrack/ros_checked_message.h"
+#include "pedtrack/ros_wire_check.h"
 #include "test_support.h"
 
 using namespace pedtrack;
@@ -406,4 +409,102 @@ TEST_CASE("a bag whose lengths point past their records is refused before rosbag
   CHECK_THAT(replayError(dir + "/info.bag"), Catch::Contains("a chunk info naming no chunk"));
   // The undamaged bag still replays.
   CHECK(replayError(dir + "/good.bag").empty());
+}
+
+namespace {
+
+template <class M>
+std::vector<std::uint8_t> serialized(const M& m) {
+  std::vector<std::uint8_t> out(ros::serialization::serializationLength(m));
+  ros::serialization::OStream s(out.data(), static_cast<std::uint32_t>(out.size()));
+  ros::serialization::serialize(s, m);
+  return out;
+}
+
+void putU32(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
+  std::memcpy(&b[at], &v, 4);
+}
+
+}  // namespace
+
+TEST_CASE("a message's counts are checked against its bytes before roscpp sizes by them",
+          "[rosbag][fuzz]") {
+  // roscpp resizes an array to the count in front of it before reading it: fuzz_rosbag's /tf
+  // message claimed 1,644,167,425 transforms (223 GB).
+  sensor_msgs::LaserScan scan;
+  scan.header.frame_id = "laser";  // header: 12 bytes, then 4 + 5
+  scan.ranges = {1, 2, 3};
+  scan.intensities = {7};
+  std::vector<std::uint8_t> b = serialized(scan);
+  CHECK(rosWireProblem("sensor_msgs/LaserScan", b.data(), b.size()) == "");
+  const auto back = checkedDeserialize<sensor_msgs::LaserScan>(b.data(), b.size());
+  CHECK(back->ranges == scan.ranges);
+  CHECK(back->intensities == scan.intensities);
+  const std::size_t ranges_at = 12 + 4 + 5 + 7 * 4;  // after the header and 7 float32
+  putU32(b, ranges_at, 1000000000);
+  CHECK(rosWireProblem("sensor_msgs/LaserScan", b.data(), b.size()) ==
+        "ranges count 1000000000 does not fit in the 20 bytes left");
+  CHECK_THROWS_WITH(checkedDeserialize<sensor_msgs::LaserScan>(b.data(), b.size()),
+                    "a sensor_msgs/LaserScan message that does not fit its 73 bytes: ranges count "
+                    "1000000000 does not fit in the 20 bytes left");
+  putU32(b, ranges_at, 4);  // one float more: the intensity 7.0 is read as the next count
+  CHECK(rosWireProblem("sensor_msgs/LaserScan", b.data(), b.size()) ==
+        "intensities count 1088421888 does not fit in the 0 bytes left");
+
+  tf2_msgs::TFMessage tf;
+  tf.transforms.resize(2);
+  tf.transforms[1].child_frame_id = "laser";
+  std::vector<std::uint8_t> t = serialized(tf);
+  CHECK(rosWireProblem("tf2_msgs/TFMessage", t.data(), t.size()) == "");
+  putU32(t, 0, 3);  // a third transform of at least 76 bytes does not fit
+  CHECK(rosWireProblem("tf2_msgs/TFMessage", t.data(), t.size()) ==
+        "transforms count 3 does not fit in the 157 bytes left");
+  putU32(t, 0, 2);
+  t.pop_back();  // the last transform cut short
+  CHECK(rosWireProblem("tf2_msgs/TFMessage", t.data(), t.size()) ==
+        "transform (56 bytes) past the message's end");
+  putU32(t, 0, 1644167425);
+  CHECK(rosWireProblem("tf2_msgs/TFMessage", t.data(), t.size()) ==
+        "transforms count 1644167425 does not fit in the " + std::to_string(t.size() - 4) +
+            " bytes left");
+
+  sensor_msgs::PointCloud2 cloud;
+  cloud.fields.resize(1);
+  cloud.fields[0].name = "x";
+  cloud.data.assign(12, 0);
+  std::vector<std::uint8_t> c = serialized(cloud);
+  CHECK(rosWireProblem("sensor_msgs/PointCloud2", c.data(), c.size()) == "");
+  const std::size_t data_at = 12 + 4 + 8 + 4 + (4 + 1 + 4 + 1 + 4) + 1 + 4 + 4;
+  putU32(c, data_at, 14);  // 12 bytes of data and is_dense are left
+  CHECK(rosWireProblem("sensor_msgs/PointCloud2", c.data(), c.size()) ==
+        "data count 14 does not fit in the 13 bytes left");
+  // A type pedtrack does not read is not checked.
+  CHECK(rosWireProblem("std_msgs/String", c.data(), 2) == "");
+}
+
+TEST_CASE("a bag found by fuzzing (a /tf message claiming 1.6 G transforms) is one error",
+          "[rosbag][fuzz]") {
+  const std::string bag = std::string(PEDTRACK_SOURCE_DIR) +
+                          "/fuzz/regressions/fuzz_rosbag/tf_transforms_count_huge.bag";
+  const std::string e = replayError(bag);
+  CHECK_THAT(e, Catch::Contains("tf_transforms_count_huge.bag: reading /tf and odometry: a "
+                                "tf2_msgs/TFMessage message that does not fit its 94 bytes: "
+                                "transforms count 1644167425 does not fit"));
+  CHECK(e.find('\n') == std::string::npos);
+  // A scan whose ranges count is patched in a bag: the error names the file and the message.
+  const std::string dir = freshDir("rosbag_counts");
+  std::string good = readFile(writeMovingRobotBag(dir + "/good.bag", true));
+  // The bag's scans have 301 ranges of 3 m (serialized: the count, then 301 float32).
+  std::string count(8, '\0');
+  const std::uint32_t n = 301;
+  const float three = 3.0f;
+  std::memcpy(&count[0], &n, 4);
+  std::memcpy(&count[4], &three, 4);
+  const std::size_t at = good.find(count);
+  REQUIRE(at != std::string::npos);
+  good[at + 3] = char(0x40);
+  writeFile(dir + "/ranges.bag", good);
+  CHECK_THAT(replayError(dir + "/ranges.bag"),
+             Catch::Contains(dir + "/ranges.bag: message ") &&
+                 Catch::Contains("a sensor_msgs/LaserScan message that does not fit its"));
 }

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "pedtrack/ros_checked_message.h"
+
 namespace pedtrack::ros_plugins {
 
 /// A message of any type. Subscribed with md5sum "*", one subscription takes whichever of
@@ -26,11 +28,7 @@ struct AnyMessage {
     if (datatype != ros::message_traits::datatype<M>() ||
         (md5sum != "*" && md5sum != ros::message_traits::md5sum<M>()))
       return nullptr;
-    auto m = boost::make_shared<M>();
-    ros::serialization::IStream s(const_cast<std::uint8_t*>(data.data()),
-                                  static_cast<std::uint32_t>(data.size()));
-    ros::serialization::deserialize(s, *m);
-    return m;
+    return checkedDeserialize<M>(data.data(), data.size());  // counts checked first
   }
 };
 

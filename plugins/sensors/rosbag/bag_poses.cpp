@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/ros_checked_message.h"
 #include "pedtrack/text.h"
 
 namespace pedtrack::rosbag_source {
@@ -70,7 +71,7 @@ BagPoses::BagPoses(const rosbag::Bag& bag, std::string fixed_frame, std::string 
   rosbag::View tf_view(
       bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static", "tf", "tf_static"}));
   for (const rosbag::MessageInstance& m : tf_view) {
-    auto msg = m.instantiate<tf2_msgs::TFMessage>();
+    auto msg = checkedInstantiate<tf2_msgs::TFMessage>(m);
     if (!msg) continue;
     const bool is_static = m.getTopic().find("tf_static") != std::string::npos;
     for (const auto& t : msg->transforms) {
@@ -80,7 +81,7 @@ BagPoses::BagPoses(const rosbag::Bag& bag, std::string fixed_frame, std::string 
   if (!odom_topic.empty()) {
     rosbag::View odom_view(bag, rosbag::TopicQuery(odom_topic));
     for (const rosbag::MessageInstance& m : odom_view) {
-      auto msg = m.instantiate<nav_msgs::Odometry>();
+      auto msg = checkedInstantiate<nav_msgs::Odometry>(m);
       if (msg) odom_.emplace_back(msg->header.stamp, mrpt::ros1bridge::fromROS(msg->pose.pose));
     }
     std::stable_sort(odom_.begin(), odom_.end(),

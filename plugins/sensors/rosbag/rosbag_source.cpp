@@ -19,6 +19,7 @@
 #include "pedtrack/errors.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/replay_pacer.h"
+#include "pedtrack/ros_checked_message.h"
 #include "pedtrack/text.h"
 #include "ros_frames.h"
 
@@ -43,9 +44,15 @@ class RosbagSource : public Sensor {
     checkMountTopics(mounts, usable_, ctx.params.where("mounts"),
                      "a scan topic of bag '" + file_ + "'");
     // One scanner's own frame is a fine robot frame; several need their mounts to line up.
-    poses_ = std::make_unique<BagPoses>(
-        bag_, ctx.params.getString("fixed_frame"), ctx.params.getString("base_frame"),
-        ctx.params.getString("odom_topic"), std::move(mounts), topics.size() > 1);
+    try {
+      poses_ = std::make_unique<BagPoses>(
+          bag_, ctx.params.getString("fixed_frame"), ctx.params.getString("base_frame"),
+          ctx.params.getString("odom_topic"), std::move(mounts), topics.size() > 1);
+    } catch (const ConfigError&) {
+      throw;
+    } catch (const std::exception& e) {  // a /tf or odometry message that cannot be read
+      throw DataError(file_ + ": reading /tf and odometry: " + oneLine(e.what()));
+    }
     realtime_ = ctx.params.getString("rate") == "realtime";
     view_ = std::make_unique<rosbag::View>(bag_, rosbag::TopicQuery(topics));
     total_ = view_->size();
@@ -96,7 +103,16 @@ class RosbagSource : public Sensor {
       out.topic = m.getTopic();
       std::string sensor_frame;
       ros::Time stamp;
-      if (auto scan = m.instantiate<sensor_msgs::LaserScan>()) {
+      boost::shared_ptr<sensor_msgs::LaserScan> scan;
+      boost::shared_ptr<sensor_msgs::PointCloud2> cloud;
+      try {
+        if (!(scan = checkedInstantiate<sensor_msgs::LaserScan>(m)))
+          cloud = checkedInstantiate<sensor_msgs::PointCloud2>(m);
+      } catch (const std::exception& e) {
+        throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " + out.topic +
+                        ": " + oneLine(e.what()));
+      }
+      if (scan) {
         sensor_frame = scan->header.frame_id;
         stamp = scan->header.stamp;
         out.robot_known = poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
@@ -104,7 +120,7 @@ class RosbagSource : public Sensor {
         if (!out.obs)
           throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " +
                           out.topic + ": LaserScan could not be converted");
-      } else if (auto cloud = m.instantiate<sensor_msgs::PointCloud2>()) {
+      } else if (cloud) {
         sensor_frame = cloud->header.frame_id;
         stamp = cloud->header.stamp;
         out.robot_known = poses_->lookup(sensor_frame, out.topic, stamp, out.robot, out.mount);
