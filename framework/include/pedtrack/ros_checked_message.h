@@ -35,8 +35,8 @@ boost::shared_ptr<T> checkedDeserialize(const std::uint8_t* bytes, std::size_t s
 /// checks it adds). `m` is a rosbag::MessageInstance (getMD5Sum, size, write).
 template <class T, class Message>
 boost::shared_ptr<T> checkedInstantiate(const Message& m) {
-  const std::string md5 = m.getMD5Sum();
-  if (md5 != "*" && md5 != ros::message_traits::MD5Sum<T>::value()) return nullptr;
+  const std::string want = ros::message_traits::MD5Sum<T>::value();  // as MessageInstance::isType
+  if (want != "*" && want != m.getMD5Sum()) return nullptr;
   std::vector<std::uint8_t> bytes(m.size());
   ros::serialization::OStream out(bytes.data(), static_cast<std::uint32_t>(bytes.size()));
   m.write(out);

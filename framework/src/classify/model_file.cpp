@@ -100,30 +100,47 @@ std::string badMatrix(const cv::FileNode& n, const std::string& at) {
   return "";
 }
 
-// The first count in an SVM node (pedtrack's: two classes, `dims` features) that OpenCV's
-// SVM::read would size memory by without checking it against the data, "" when all agree. It
-// allocates support vectors × var_count floats and, per decision function, sv_count weights and
-// indices, so a corrupt var_count or sv_count asked for gigabytes.
-std::string badSvmCount(const cv::FileNode& svm, int dims) {
+// The first thing in an SVM node that OpenCV's SVM::read would trust unchecked, "" when none.
+// pedtrack trains C_SVC with an RBF kernel: two classes, one decision function, `dims` features.
+// SVM::read allocates support vectors × var_count floats and, per decision function, sv_count
+// weights and indices before it checks them against the data (a corrupt var_count or sv_count
+// asked for gigabytes, and 40,000 features × 40,000 one-number vectors would ask for 6.4 GB),
+// and with a LINEAR kernel and optimize_linear it indexes the vectors by the file's indices as
+// it reads. So every count must match the data it counts, and every index a vector.
+std::string badSvm(const cv::FileNode& svm, int dims) {
   const auto whole = [](const cv::FileNode& v, long lo, long hi) {
     return v.isInt() && int(v) >= lo && int(v) <= hi;
   };
+  const auto vectors = [&](const cv::FileNode& list, const cv::FileNode& total) {
+    if (!list.isSeq() || !whole(total, 0, long(list.size())) || int(total) != int(list.size()))
+      return false;
+    for (auto it = list.begin(); it != list.end(); ++it)
+      if (!(*it).isSeq() || int((*it).size()) != dims) return false;
+    return true;
+  };
+  if (!svm["svm_type"].empty() || std::string(svm["svmType"]) != "C_SVC") return "not a C_SVC SVM";
+  if (std::string(svm["kernel"]["type"]) != "RBF") return "not an RBF kernel";
+  if (!svm["optimize_linear"].empty() && !whole(svm["optimize_linear"], 0, 0))
+    return "optimize_linear is set";
   if (!whole(svm["var_count"], dims, dims)) return "var_count is not the features' count";
   if (!whole(svm["class_count"], 2, 2)) return "class_count is not 2";
-  const cv::FileNode sv = svm["support_vectors"];
-  if (!sv.isSeq() || !whole(svm["sv_total"], 1, long(sv.size())))
-    return "sv_total does not match support_vectors";
+  if (!vectors(svm["support_vectors"], svm["sv_total"]) || int(svm["sv_total"]) < 1)
+    return "sv_total does not match support_vectors, or one has other than var_count values";
   const long sv_total = int(svm["sv_total"]);
   const cv::FileNode uncompressed = svm["uncompressed_sv_total"];
   if (!uncompressed.empty() &&
-      !whole(uncompressed, 0, long(svm["uncompressed_support_vectors"].size())))
-    return "uncompressed_sv_total does not match uncompressed_support_vectors";
+      !(whole(uncompressed, 0, 0) || vectors(svm["uncompressed_support_vectors"], uncompressed)))
+    return "uncompressed_sv_total does not match uncompressed_support_vectors, or one has other "
+           "than var_count values";
   const cv::FileNode functions = svm["decision_functions"];
   if (!functions.isSeq() || functions.size() != 1) return "not one decision function";
-  const cv::FileNode f = functions[0];
+  const cv::FileNode f = functions[0], index = f["index"];
   if (!whole(f["sv_count"], 0, sv_total) || f["alpha"].size() != std::size_t(int(f["sv_count"])) ||
-      f["index"].size() != std::size_t(int(f["sv_count"])))
+      index.size() != std::size_t(int(f["sv_count"])))
     return "the decision function's sv_count, alpha and index do not agree";
+  for (auto it = index.begin(); it != index.end(); ++it)
+    if (!whole(*it, 0, sv_total - 1))
+      return "a support vector index outside 0.." + std::to_string(sv_total - 1);
   return "";
 }
 
@@ -260,7 +277,7 @@ LoadedSvm loadSvmModel(const std::string& path) {
   for (double s : z.scale)
     if (!(s > 0)) r.fail("'scale' has a value that is not positive");
   PlattSigmoid platt{double(r.node("platt_a")), double(r.node("platt_b"))};
-  if (const std::string bad = badSvmCount(r.node("svm"), d); !bad.empty())
+  if (const std::string bad = badSvm(r.node("svm"), d); !bad.empty())
     r.fail("bad 'svm' (" + bad + ")");
   auto svm = cv::ml::SVM::create();
   try {

@@ -2,9 +2,11 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <memory>
+#include <vector>
 
 #include "pedtrack/errors.h"
 
@@ -35,7 +37,7 @@ bool blankOrComment(const std::string& s, std::size_t from, std::size_t to) {
 // no limit, and 65,000 '[' overflowed its stack (and 6,000 '-' ours, walking the tree). Under
 // these bounds and the line forms below, the parser recurses at most ~100 levels.
 constexpr std::size_t kMaxIndent = 64;
-constexpr int kMaxFlowDepth = 16;
+constexpr std::size_t kMaxFlowDepth = 16;
 
 // The lines of the root map, in the forms OpenCV's YAML writer gives a pedtrack model:
 //   key:            key: VALUE         - VALUE         -          (and flow continuation lines)
@@ -46,11 +48,12 @@ class LineForms {
  public:
   // "" or the problem with the line [b, e).
   std::string check(const std::string& t, std::size_t b, std::size_t e) {
-    if (flow_depth_ > 0) return flow(t, b, e);
-    if (blankOrComment(t, b, e)) return "";
     std::size_t p = b;
     while (p < e && t[p] == ' ') ++p;
-    if (p - b > kMaxIndent) return "indented more than " + std::to_string(kMaxIndent) + " columns";
+    if (p < e && p - b > kMaxIndent)
+      return "indented more than " + std::to_string(kMaxIndent) + " columns";
+    if (inFlow()) return flow(t, b, e);
+    if (blankOrComment(t, b, e)) return "";
     if (t[p] == '-' && (p + 1 == e || t[p + 1] == ' ')) {  // a block sequence's item
       ++p;
     } else {  // key:
@@ -63,12 +66,15 @@ class LineForms {
     while (p < e && t[p] == ' ') ++p;
     return blankOrComment(t, p, e) ? "" : value(t, p, e);
   }
-  bool inFlow() const { return flow_depth_ > 0; }
+  bool inFlow() const { return !open_.empty(); }
 
  private:
   std::string value(const std::string& t, std::size_t p, std::size_t e) {
     const char c = t[p], d = p + 1 < e ? t[p + 1] : '\0';
-    if (c == '[' || c == '{') return flow(t, p, e);
+    if (c == '[' || c == '{') {
+      open(c);
+      return flow(t, p + 1, e);
+    }
     if (c == '"') {  // to the closing quote; a backslash escapes the next character
       std::size_t q = p + 1;
       while (q < e && t[q] != '"') q += t[q] == '\\' ? 2 : 1;
@@ -96,26 +102,70 @@ class LineForms {
     }
     return rest(t, q, e);
   }
-  // Brackets counted, never fewer than OpenCV opens: no quote or comment can hide one (a '[' in
-  // a word is text to OpenCV, but counted here; every ']' and '}' closes).
+  // A [ ] / { } collection read as OpenCV reads it: in a sequence each element is a value, in
+  // a map "key: value"; a value is a nested collection or a word, which ends at ',', ']', '}'
+  // or the line's end. Brackets are counted exactly where OpenCV opens and closes one; where it
+  // would read a bracket as text (in a word or key), or a quote or '#' could hide one, the line
+  // is refused: pedtrack writes numbers and plain keys there.
+  enum class Flow { Value, Key, InKey, InWord, After };
+  void open(char c) {
+    open_.push_back(c);
+    at_ = c == '[' ? Flow::Value : Flow::Key;
+  }
   std::string flow(const std::string& t, std::size_t p, std::size_t e) {
+    const std::string bad_key = "a key inside { } that is not a word followed by ':'";
     for (; p < e; ++p) {
       const char c = t[p];
       if (c == '"' || c == '\'' || c == '#') return "a quote or '#' inside [ ] or { }";
-      if (c == '[' || c == '{') {
-        if (++flow_depth_ > kMaxFlowDepth)
-          return "[ ] or { } nested more than " + std::to_string(kMaxFlowDepth) + " deep";
-      } else if (c == ']' || c == '}') {
-        if (--flow_depth_ == 0) return rest(t, p + 1, e);  // (flow is entered at a '[' or '{')
+      if (c == ' ' && at_ != Flow::InWord && at_ != Flow::InKey) continue;
+      if (c == ']' || c == '}' || c == ',') {
+        if (at_ == Flow::InKey) return bad_key;
+        if (c == ',') {
+          at_ = open_.back() == '[' ? Flow::Value : Flow::Key;
+          continue;
+        }
+        if ((c == ']') != (open_.back() == '[')) return "a ']' or '}' that does not match";
+        open_.pop_back();
+        if (open_.empty()) return rest(t, p + 1, e);
+        at_ = Flow::After;
+        continue;
+      }
+      switch (at_) {
+        case Flow::Value:
+          if (c == '[' || c == '{') {
+            open(c);
+            if (open_.size() > kMaxFlowDepth)
+              return "[ ] or { } nested more than " + std::to_string(kMaxFlowDepth) + " deep";
+          } else {
+            at_ = Flow::InWord;
+          }
+          break;
+        case Flow::Key:
+        case Flow::InKey:
+          if (c == ':' && at_ == Flow::InKey)
+            at_ = Flow::Value;
+          else if (!(at_ == Flow::Key ? isKeyStart(c) : isKeyChar(c)))
+            return bad_key;
+          else
+            at_ = Flow::InKey;
+          break;
+        case Flow::InWord:
+          if (c == '[' || c == '{') return "a '[' or '{' inside a word in [ ] or { }";
+          break;
+        case Flow::After:
+          return "more after a [ ] or { } inside [ ] or { }";
       }
     }
-    return "";
+    // A word ends with its line (OpenCV reads printable characters only); a key may not.
+    if (at_ == Flow::InWord) at_ = Flow::After;
+    return at_ == Flow::InKey ? bad_key : "";
   }
   static std::string rest(const std::string& t, std::size_t p, std::size_t e) {
     return blankOrComment(t, p, e) ? "" : "more after the value";
   }
 
-  int flow_depth_ = 0;
+  std::vector<char> open_;  // the open collections' brackets, outermost first
+  Flow at_ = Flow::Value;
 };
 
 }  // namespace
@@ -129,22 +179,24 @@ std::string modelTextProblem(const std::string& text) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c < 0x20 && c != '\t' && c != '\n' && c != '\r')
       return "control byte at offset " + std::to_string(i);
+    // OpenCV drops the rest of a line after a CR: text this check would see and it would not.
+    if (c == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))
+      return "a CR without LF at offset " + std::to_string(i);
   }
-  // Lines split at CR as well as LF: OpenCV starts a line after LF only, so every line start it
-  // sees is checked (and a CR amid a line, which it drops the rest of, is only refused sooner).
+  // Lines end at LF (a CR before it dropped), as OpenCV reads them.
   bool in_header = true, seen_document_start = false;
   LineForms forms;
   std::size_t line_no = 0;
   for (std::size_t begin = 0; begin < text.size();) {
-    std::size_t end = text.find_first_of("\r\n", begin);
-    if (end == std::string::npos) end = text.size();
+    const std::size_t lf = std::min(text.find('\n', begin), text.size());
+    const std::size_t end = lf > begin && text[lf - 1] == '\r' ? lf - 1 : lf;
     ++line_no;
     const std::string at = "line " + std::to_string(line_no) + ": ";
-    if (!forms.inFlow() && !blankOrComment(text, begin, end)) {
+    if (!blankOrComment(text, begin, end)) {
       const bool marker = startsWith(text, begin, "---") || startsWith(text, begin, "...");
       if (in_header) {
         if (text[begin] == '%') {
-          begin = end + 1;  // a directive
+          begin = lf + 1;  // a directive
           continue;
         }
         if (startsWith(text, begin, "---")) {
@@ -152,7 +204,7 @@ std::string modelTextProblem(const std::string& text) {
           if (!blankOrComment(text, begin + 3, end))
             return at + "content after '---' (a model file's root is a map on the lines below)";
           seen_document_start = true;
-          begin = end + 1;
+          begin = lf + 1;
           continue;
         }
         if (text[begin] == ' ')
@@ -168,8 +220,9 @@ std::string modelTextProblem(const std::string& text) {
     }
     if (!in_header)
       if (const std::string bad = forms.check(text, begin, end); !bad.empty()) return at + bad;
-    begin = end + 1;
+    begin = lf + 1;
   }
+  if (forms.inFlow()) return "the file ends inside [ ] or { }";
   return "";
 }
 
