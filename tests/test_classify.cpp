@@ -19,6 +19,11 @@ using namespace pedtrack::classify;
 
 namespace {
 
+// An input fuzz_model once crashed or hung on (fuzz/regressions/fuzz_model/), "" for the folder.
+std::string fuzzInput(const std::string& file) {
+  return std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/" + file;
+}
+
 // Persons at the corners of a 2 m square around (1, 1); non-persons at the corners of a 4 m
 // square around (12, 2). Per class the covariance is diag(4/3, 4/3) and diag(16/3, 16/3), so
 // P2's Σ = (Σ_P + Σ_P̄)/2 = (10/3)·I and d² = 0.3·|x − x'|².
@@ -293,8 +298,7 @@ TEST_CASE("the RBF decision function agrees with OpenCV's predict on the shipped
 TEST_CASE("a model file found by fuzzing (support vector indices past the vectors) is refused",
           "[classify][fuzz]") {
   // fuzz/regressions/fuzz_model: once a heap overflow in SvmClassifier's constructor.
-  const std::string path =
-      std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/svm_index_past_vectors.yml";
+  const std::string path = fuzzInput("svm_index_past_vectors.yml");
   CHECK_THROWS_WITH(pedtrack::classify::loadScorer(path),
                     Catch::Contains("svm_index_past_vectors.yml: bad 'svm' (a support vector index "
                                     "outside 0..798)"));
@@ -305,8 +309,7 @@ TEST_CASE("a model file found by fuzzing (a matrix with no rows) is refused befo
   // fuzz/regressions/fuzz_model: "rows: ~" made OpenCV's reader allocate 17 GB. The matrix check
   // caught it first; now the line forms do ('~' is no value pedtrack writes), and the matrix
   // check is tested on its own below ("... refused before OpenCV reads").
-  const std::string path =
-      std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/matrix_rows_missing.yml";
+  const std::string path = fuzzInput("matrix_rows_missing.yml");
   CHECK_THROWS_WITH(
       pedtrack::classify::loadScorer(path),
       Catch::Contains("matrix_rows_missing.yml: not a readable model file (line 38: "
@@ -317,8 +320,7 @@ TEST_CASE("a model file found by fuzzing (control bytes) is refused before parsi
           "[classify][fuzz]") {
   // fuzz/regressions/fuzz_model: control bytes amid the YAML made OpenCV 4.6's parser loop for
   // good (the fuzzer's 24 s timeout). The first one, a NUL, is at offset 10.
-  const std::string path =
-      std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/control_bytes_hang.yml";
+  const std::string path = fuzzInput("control_bytes_hang.yml");
   CHECK_THROWS_WITH(pedtrack::classify::loadScorer(path),
                     Catch::Contains("control_bytes_hang.yml: not a readable model file (control "
                                     "byte at offset 10)"));
@@ -330,7 +332,7 @@ TEST_CASE("model files found by fuzzing (a second YAML document) are refused bef
   // characters for the '---' or '...' it assumes, then loops for good on a '-' that is not
   // '---' (the fuzzer's 20 s timeout). The first has its root on the '---' line (and, at offset
   // 683, a lone CR, which is refused first: see below), the second a '...' after the root map.
-  const std::string dir = std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/";
+  const std::string dir = fuzzInput("");
   CHECK_THROWS_WITH(loadScorer(dir + "second_document_hang.yml"),
                     Catch::Contains("second_document_hang.yml: not a readable model file (a CR "
                                     "without LF at offset 683)"));
@@ -416,7 +418,7 @@ TEST_CASE("a model's text must have the layout pedtrack writes: one document, a 
         "line 3: more after a [ ] or { } inside [ ] or { }");
   // ... while what OpenCV writes stays legal: nested and multi-line flow, a flow map's values.
   CHECK(modelTextProblem(head + "a: [ [ 1, -2.5e-01 ], { k: [ 3 ], j:x:y },\n    4 ]\r\n") == "");
-  const std::string reg = std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/";
+  const std::string reg = fuzzInput("");
   CHECK(modelTextProblem(test::readFile(reg + "nested_sequences_stack_overflow.yml")) ==
         "line 5: a value that is not a number, word, string, tag or [ ] / { }");
 }
@@ -426,7 +428,7 @@ TEST_CASE("model files whose counts would size OpenCV's allocations are refused 
   // fuzz/regressions/fuzz_model/matrix_data_key_mangled.yml: class_labels' "data" key mangled
   // (so the matrix was not checked) and its "rows: (2", which OpenCV reads as INT_MAX: 8 GB.
   // Its line 14 (a mangled key) is now refused first; the matrix itself is patched in below.
-  const std::string reg = std::string(PEDTRACK_SOURCE_DIR) + "/fuzz/regressions/fuzz_model/";
+  const std::string reg = fuzzInput("");
   CHECK_THROWS_WITH(loadScorer(reg + "matrix_data_key_mangled.yml"),
                     Catch::Contains("matrix_data_key_mangled.yml: not a readable model file (line "
                                     "14: a key without ':')"));
