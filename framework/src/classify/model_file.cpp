@@ -236,8 +236,11 @@ void saveSvmModel(const std::string& path, const ModelInfo& info, const SvmClass
   w.commit();
 }
 
-LoadedKnn loadKnnModel(const std::string& path) {
-  ModelReader r(path, "knn");
+namespace {
+
+// The loaders' bodies, on a reader already open and checked, so that loadScorer reads a file
+// once (it read it twice, once for its kind).
+LoadedKnn readKnn(ModelReader& r) {
   LoadedKnn m;
   m.info = r.info;
   const int d = int(m.info.features.size());
@@ -264,8 +267,7 @@ LoadedKnn loadKnnModel(const std::string& path) {
   return m;
 }
 
-LoadedSvm loadSvmModel(const std::string& path) {
-  ModelReader r(path, "svm");
+LoadedSvm readSvm(ModelReader& r) {
   LoadedSvm m;
   m.info = r.info;
   const int d = int(m.info.features.size());
@@ -293,6 +295,18 @@ LoadedSvm loadSvmModel(const std::string& path) {
     r.fail(e.what());
   }
   return m;
+}
+
+}  // namespace
+
+LoadedKnn loadKnnModel(const std::string& path) {
+  ModelReader r(path, "knn");
+  return readKnn(r);
+}
+
+LoadedSvm loadSvmModel(const std::string& path) {
+  ModelReader r(path, "svm");
+  return readSvm(r);
 }
 
 std::string modelKind(const std::string& path) {
@@ -332,9 +346,10 @@ class SvmScorer : public Scorer {
 }  // namespace
 
 std::unique_ptr<Scorer> loadScorer(const std::string& path, const KnnOptions* knn) {
-  const std::string kind = modelKind(path);
-  if (kind == "knn") return std::make_unique<KnnScorer>(loadKnnModel(path), knn);
-  if (kind == "svm") return std::make_unique<SvmScorer>(loadSvmModel(path));
+  ModelReader r(path, "");
+  const std::string kind = r.info.kind;
+  if (kind == "knn") return std::make_unique<KnnScorer>(readKnn(r), knn);
+  if (kind == "svm") return std::make_unique<SvmScorer>(readSvm(r));
   throw ConfigError(path + ": unknown model kind '" + kind + "' (knn, svm)");
 }
 
