@@ -112,8 +112,7 @@ std::string badSvm(const cv::FileNode& svm, int dims) {
     return v.isInt() && int(v) >= lo && int(v) <= hi;
   };
   const auto vectors = [&](const cv::FileNode& list, const cv::FileNode& total) {
-    if (!list.isSeq() || !whole(total, 0, long(list.size())) || int(total) != int(list.size()))
-      return false;
+    if (!list.isSeq() || !total.isInt() || int(total) != int(list.size())) return false;
     for (auto it = list.begin(); it != list.end(); ++it)
       if (!(*it).isSeq() || int((*it).size()) != dims) return false;
     return true;

@@ -191,7 +191,7 @@ std::string modelTextProblem(const std::string& text) {
     const std::size_t lf = std::min(text.find('\n', begin), text.size());
     const std::size_t end = lf > begin && text[lf - 1] == '\r' ? lf - 1 : lf;
     ++line_no;
-    const std::string at = "line " + std::to_string(line_no) + ": ";
+    const auto at = [&] { return "line " + std::to_string(line_no) + ": "; };  // on error only
     if (!blankOrComment(text, begin, end)) {
       const bool marker = startsWith(text, begin, "---") || startsWith(text, begin, "...");
       if (in_header) {
@@ -200,26 +200,26 @@ std::string modelTextProblem(const std::string& text) {
           continue;
         }
         if (startsWith(text, begin, "---")) {
-          if (seen_document_start) return at + "a second '---' (a model file is one document)";
+          if (seen_document_start) return at() + "a second '---' (a model file is one document)";
           if (!blankOrComment(text, begin + 3, end))
-            return at + "content after '---' (a model file's root is a map on the lines below)";
+            return at() + "content after '---' (a model file's root is a map on the lines below)";
           seen_document_start = true;
           begin = lf + 1;
           continue;
         }
         if (text[begin] == ' ')
-          return at + "the root is indented (a model file's root is a map at column 0)";
-        if (!isKeyStart(text[begin])) return at + "the root is not a map of keys";
+          return at() + "the root is indented (a model file's root is a map at column 0)";
+        if (!isKeyStart(text[begin])) return at() + "the root is not a map of keys";
         in_header = false;
       } else if (marker) {
         // The root map would end here and the parser go on to a next document.
-        return at +
+        return at() +
                "a document marker ('---' or '...') after the root (a model file is one "
                "document)";
       }
     }
     if (!in_header)
-      if (const std::string bad = forms.check(text, begin, end); !bad.empty()) return at + bad;
+      if (const std::string bad = forms.check(text, begin, end); !bad.empty()) return at() + bad;
     begin = lf + 1;
   }
   if (forms.inFlow()) return "the file ends inside [ ] or { }";
