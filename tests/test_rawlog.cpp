@@ -173,6 +173,45 @@ TEST_CASE("a sensory frame claiming a billion observations: error, or skipped", 
   CHECK(skip.entries_skipped == 2);
 }
 
+TEST_CASE("a 2D scan claiming two billion beams: error, or skipped", "[rawlog]") {
+  // MRPT would size the scan's ranges, validity and intensities (9 bytes a beam: 18 GB) to the
+  // count before reading one beam; the stream reads the count ahead when MRPT has read the
+  // scan's class name. Here the scan is inside a sensory frame, as in most rawlogs.
+  PlainLog log = plainSena();
+  std::size_t bad = 0;
+  for (std::size_t k = 100; k < log.is_frame.size() && !bad; ++k)
+    if (log.is_frame[k]) bad = k;
+  REQUIRE(bad > 0);
+  const std::string scan = "\xA2mrpt::obs::CObservation2DRangeScan\x07";  // header, version 7
+  const std::size_t at = log.bytes.find(scan, log.offsets[bad]);
+  REQUIRE(at < log.offsets[bad + 1]);
+  // aperture, rightToLeft, maxRange; the sensor pose (a CPose3D of version 3: 12 doubles) and
+  // MRPT's end-of-object byte; then the count.
+  const std::size_t pose = at + scan.size() + 9;
+  REQUIRE(log.bytes.compare(pose, 22, "\x94mrpt::poses::CPose3D\x03") == 0);
+  const std::size_t count = pose + 22 + 96 + 1;
+  REQUIRE(static_cast<unsigned char>(log.bytes[count - 1]) == 0x88);
+  REQUIRE(log.bytes.compare(count, 4, "\x69\x01\x00\x00", 4) == 0);  // 361 beams
+  log.bytes.replace(count, 4, "\x00\x94\x35\x77", 4);                // 2·10^9, little-endian
+  const std::string dir = freshDir("rawlog_huge_beams");
+  writeFile(dir + "/beams.rawlog", log.bytes);
+  const auto r = runHost({"run", PEDTRACK_SOURCE_DIR "/configs/replay.ini", "--input",
+                          dir + "/beams.rawlog", "--out", dir + "/out", "-q"});
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output, Catch::Contains("entry " + std::to_string(bad) + " (byte " +
+                                       std::to_string(log.offsets[bad]) +
+                                       "): unreadable: a 2D scan of 2000000000 beams (at most "
+                                       "1000000)"));
+  CHECK(jsonNumber(readFile(dir + "/out/run.json"), "frames_processed") == framesBefore(log, bad));
+
+  const auto skip = replay(dir + "/beams.rawlog", "skip_bad = true\n");
+  CHECK(skip.status == "ok");
+  CHECK(skip.frames_read == 224);  // all but the broken scan
+  // Resynchronising finds the scan inside the frame (refused again), then its sensor pose (a
+  // whole object, read and ignored), then the beams, unreadable, until the next frame.
+  CHECK(skip.entries_skipped == 3);
+}
+
 TEST_CASE("plain and gz-compressed logs give the same frames", "[rawlog]") {
   const PlainLog log = plainSena();
   const std::string dir = freshDir("rawlog_plain_vs_gz");
@@ -219,4 +258,11 @@ TEST_CASE(
   // MRPT grew the frame's deque block by block towards 15 GB (an out-of-memory under the
   // fuzzer; on a robot, whatever memory the machine has).
   checkRawlogRegression("huge_frame_count.rawlog");
+}
+
+TEST_CASE("a rawlog found by fuzzing (a 2D scan of 980,709,376 beams) ends in one clear error",
+          "[rawlog][fuzz]") {
+  // MRPT sized the scan's arrays to the count first: 8.8 GB allocated and zero-filled, past the
+  // fuzzer's memory limit.
+  checkRawlogRegression("scan_beam_count_huge.rawlog");
 }

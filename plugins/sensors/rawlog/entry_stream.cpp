@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scan_header.h"
+
 namespace pedtrack::rawlog {
 
 EntryStream::EntryStream(const std::string& path) {
@@ -14,6 +16,7 @@ EntryStream::EntryStream(const std::string& path) {
 
 void EntryStream::beginEntry() {
   entry_.clear();
+  refusal_.clear();
   entry_offset_ = position_;
 }
 
@@ -34,7 +37,21 @@ size_t EntryStream::Read(void* buffer, size_t count) {
   }
   entry_.insert(entry_.end(), out, out + n);
   position_ += n;
+  if (!peeking_) checkScanHeader(n);
   return n;
+}
+
+void EntryStream::checkScanHeader(std::size_t n) {
+  // MRPT reads an object header as one byte (0x80 | name length), then the name in one read.
+  if (n == 0 || n > 127 || entry_.size() < n + 1) return;
+  const auto name_at = entry_.end() - std::ptrdiff_t(n);
+  if (*(name_at - 1) != (0x80 | n)) return;
+  if (!isScanClassName(std::string(name_at, entry_.end()))) return;
+  const std::optional<std::uint32_t> beams = scanBeamCount(peek(kScanHeaderBytes));
+  if (!beams || *beams <= kMaxScanBeams) return;
+  refusal_ = "a 2D scan of " + std::to_string(*beams) + " beams (at most " +
+             std::to_string(kMaxScanBeams) + ")";
+  throw std::runtime_error(refusal_);
 }
 
 bool EntryStream::readByte(std::uint8_t& b) {
@@ -84,7 +101,14 @@ bool EntryStream::atEnd() {
 
 std::vector<std::uint8_t> EntryStream::peek(std::size_t count) {
   std::vector<std::uint8_t> out(count);
-  out.resize(Read(out.data(), count));
+  peeking_ = true;
+  try {
+    out.resize(Read(out.data(), count));
+  } catch (...) {
+    peeking_ = false;
+    throw;
+  }
+  peeking_ = false;
   // Given back as if never read: served again first, not part of the entry yet.
   pending_.insert(pending_.begin(), out.begin(), out.end());
   position_ -= out.size();

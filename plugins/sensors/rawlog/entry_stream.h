@@ -1,7 +1,9 @@
 #pragma once
 // A read-only MRPT stream over a rawlog (gz-compressed or plain) that remembers the bytes of the
 // entry being read, so that after a corrupt entry it can scan forward for the next object header
-// and resume there. Memory stays bounded by the largest entry.
+// and resume there. Memory stays bounded by the largest entry. It also refuses an entry whose 2D
+// scan claims more beams than a scanner gives, before MRPT sizes memory to the count
+// (scan_header.h).
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CStream.h>
 
@@ -27,6 +29,9 @@ class EntryStream : public mrpt::io::CStream {
   bool resync();
   /// True when no byte is left (a failed entry that reached it was truncated).
   bool atEnd();
+  /// Why this stream refused the current entry ("" when it did not): MRPT reports an exception
+  /// thrown from a read as its own parse error, with this text lines further down.
+  const std::string& refusal() const { return refusal_; }
   /// Up to `count` next bytes, left unread (fewer at the end of the file).
   std::vector<std::uint8_t> peek(std::size_t count);
 
@@ -38,10 +43,15 @@ class EntryStream : public mrpt::io::CStream {
 
  private:
   bool readByte(std::uint8_t& b);
+  /// After a read of n bytes: when they were a 2D scan's class name (its object header's 0x80 | n
+  /// just before), throws if the scan's beam count, still unread, exceeds kMaxScanBeams.
+  void checkScanHeader(std::size_t n);
   mrpt::io::CFileGZInputStream in_;
   std::deque<std::uint8_t> pending_;  // bytes given back by resync(), served before `in_`
   std::vector<std::uint8_t> entry_;
   std::uint64_t position_ = 0, entry_offset_ = 0;
+  bool peeking_ = false;  // peek() reads too: no header check inside it
+  std::string refusal_;
 };
 
 }  // namespace pedtrack::rawlog

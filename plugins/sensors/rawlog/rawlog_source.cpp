@@ -133,7 +133,10 @@ class RawlogSource : public Sensor {
         const bool eof = stream_.atEnd();
         if (eof && stream_.entryBytes() == 0) return nullptr;
         std::string what = e.what();
-        what = eof ? "truncated (end of file inside the entry)" : "unreadable: " + oneLine(what);
+        if (!stream_.refusal().empty())
+          what = "unreadable: " + stream_.refusal();
+        else
+          what = eof ? "truncated (end of file inside the entry)" : "unreadable: " + oneLine(what);
         const std::string msg = file_ + ": entry " + std::to_string(entry_) + " (byte " +
                                 std::to_string(stream_.entryOffset()) + "): " + what;
         if (!skip_bad_) throw DataError(msg);
