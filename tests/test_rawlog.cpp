@@ -141,13 +141,35 @@ TEST_CASE("garbage bytes between entries: error, or skipped and resynchronised",
   CHECK(skip.entries_skipped == 1);
 }
 
+// The first sensory frame from entry 100 on (mid-log: frames before and after it).
+static std::size_t midLogFrame(const PlainLog& log) {
+  for (std::size_t k = 100; k < log.is_frame.size(); ++k)
+    if (log.is_frame[k]) return k;
+  return 0;
+}
+
+// Writes the patched log as NAME.rawlog and replays it: the run stops at entry `bad` with
+// `message` after every frame before it; returns the same log replayed with skip_bad.
+static RunSummary checkRefusedEntry(const PlainLog& log, std::size_t bad, const std::string& name,
+                                    const std::string& message) {
+  const std::string dir = freshDir("rawlog_" + name);
+  writeFile(dir + "/" + name + ".rawlog", log.bytes);
+  const auto r = runHost({"run", PEDTRACK_SOURCE_DIR "/configs/replay.ini", "--input",
+                          dir + "/" + name + ".rawlog", "--out", dir + "/out", "-q"});
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.output, Catch::Contains("entry " + std::to_string(bad) + " (byte " +
+                                       std::to_string(log.offsets[bad]) + "): " + message));
+  CHECK(jsonNumber(readFile(dir + "/out/run.json"), "frames_processed") == framesBefore(log, bad));
+  const auto skip = replay(dir + "/" + name + ".rawlog", "skip_bad = true\n");
+  CHECK(skip.status == "ok");
+  return skip;
+}
+
 TEST_CASE("a sensory frame claiming a billion observations: error, or skipped", "[rawlog]") {
   // MRPT would size the frame's deque to the count before reading one observation (16 GB for
   // 10^9); the count is checked in the entry's header first.
   PlainLog log = plainSena();
-  std::size_t bad = 0;
-  for (std::size_t k = 100; k < log.is_frame.size() && !bad; ++k)
-    if (log.is_frame[k]) bad = k;
+  const std::size_t bad = midLogFrame(log);
   REQUIRE(bad > 0);
   const std::string name = "mrpt::obs::CSensoryFrame";
   const std::size_t at = log.offsets[bad];
@@ -155,18 +177,8 @@ TEST_CASE("a sensory frame claiming a billion observations: error, or skipped", 
   REQUIRE(log.bytes.compare(at + 1, name.size(), name) == 0);
   REQUIRE(log.bytes[at + 1 + name.size()] == 2);  // version 2: the count comes next
   log.bytes.replace(at + 2 + name.size(), 4, "\x00\xCA\x9A\x3B", 4);  // 10^9, little-endian
-  const std::string dir = freshDir("rawlog_huge_count");
-  writeFile(dir + "/count.rawlog", log.bytes);
-  const auto r = runHost({"run", PEDTRACK_SOURCE_DIR "/configs/replay.ini", "--input",
-                          dir + "/count.rawlog", "--out", dir + "/out", "-q"});
-  CHECK(r.exit_code == 1);
-  CHECK_THAT(r.output,
-             Catch::Contains("entry " + std::to_string(bad) + " (byte " + std::to_string(at) +
-                             "): unreadable: a " + name + " of 1000000000 items (at most 65536)"));
-  CHECK(jsonNumber(readFile(dir + "/out/run.json"), "frames_processed") == framesBefore(log, bad));
-
-  const auto skip = replay(dir + "/count.rawlog", "skip_bad = true\n");
-  CHECK(skip.status == "ok");
+  const auto skip = checkRefusedEntry(
+      log, bad, "huge_count", "unreadable: a " + name + " of 1000000000 items (at most 65536)");
   // Nothing lost: resynchronising finds the broken frame's scan and reads it on its own; the
   // frame's header and what follows its scan are the two entries skipped.
   CHECK(skip.frames_read == 225);
@@ -178,9 +190,7 @@ TEST_CASE("a 2D scan claiming two billion beams: error, or skipped", "[rawlog]")
   // count before reading one beam; the stream reads the count ahead when MRPT has read the
   // scan's class name. Here the scan is inside a sensory frame, as in most rawlogs.
   PlainLog log = plainSena();
-  std::size_t bad = 0;
-  for (std::size_t k = 100; k < log.is_frame.size() && !bad; ++k)
-    if (log.is_frame[k]) bad = k;
+  const std::size_t bad = midLogFrame(log);
   REQUIRE(bad > 0);
   const std::string scan = "\xA2mrpt::obs::CObservation2DRangeScan\x07";  // header, version 7
   const std::size_t at = log.bytes.find(scan, log.offsets[bad]);
@@ -193,19 +203,8 @@ TEST_CASE("a 2D scan claiming two billion beams: error, or skipped", "[rawlog]")
   REQUIRE(static_cast<unsigned char>(log.bytes[count - 1]) == 0x88);
   REQUIRE(log.bytes.compare(count, 4, "\x69\x01\x00\x00", 4) == 0);  // 361 beams
   log.bytes.replace(count, 4, "\x00\x94\x35\x77", 4);                // 2·10^9, little-endian
-  const std::string dir = freshDir("rawlog_huge_beams");
-  writeFile(dir + "/beams.rawlog", log.bytes);
-  const auto r = runHost({"run", PEDTRACK_SOURCE_DIR "/configs/replay.ini", "--input",
-                          dir + "/beams.rawlog", "--out", dir + "/out", "-q"});
-  CHECK(r.exit_code == 1);
-  CHECK_THAT(r.output, Catch::Contains("entry " + std::to_string(bad) + " (byte " +
-                                       std::to_string(log.offsets[bad]) +
-                                       "): unreadable: a 2D scan of 2000000000 beams (at most "
-                                       "1000000)"));
-  CHECK(jsonNumber(readFile(dir + "/out/run.json"), "frames_processed") == framesBefore(log, bad));
-
-  const auto skip = replay(dir + "/beams.rawlog", "skip_bad = true\n");
-  CHECK(skip.status == "ok");
+  const auto skip = checkRefusedEntry(
+      log, bad, "huge_beams", "unreadable: a 2D scan of 2000000000 beams (at most 1000000)");
   CHECK(skip.frames_read == 224);  // all but the broken scan
   // Resynchronising finds the scan inside the frame (refused again), then its sensor pose (a
   // whole object, read and ignored), then the beams, unreadable, until the next frame.
