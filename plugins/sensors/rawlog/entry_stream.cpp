@@ -47,10 +47,19 @@ void EntryStream::checkScanHeader(std::size_t n) {
   const auto name_at = entry_.end() - std::ptrdiff_t(n);
   if (*(name_at - 1) != (0x80 | n)) return;
   if (!isScanClassName(std::string(name_at, entry_.end()))) return;
-  const std::optional<std::uint32_t> beams = scanBeamCount(peek(kScanHeaderBytes));
-  if (!beams || *beams <= kMaxScanBeams) return;
-  refusal_ = "a 2D scan of " + std::to_string(*beams) + " beams (at most " +
-             std::to_string(kMaxScanBeams) + ")";
+  const std::optional<ScanHeader> h = readScanHeader(peek(kScanHeaderBytes));
+  if (!h) return;
+  if (h->beams > kMaxScanBeams) {
+    refusal_ = "a 2D scan of " + std::to_string(h->beams) + " beams (at most " +
+               std::to_string(kMaxScanBeams) + ")";
+  } else {
+    // The beams are few enough to read ahead past them (5 bytes each) to the label's length.
+    const std::optional<std::uint32_t> label =
+        readU32(peek(h->labelLengthAt() + 4), h->labelLengthAt());
+    if (!label || *label <= kMaxLabelBytes) return;
+    refusal_ = "a 2D scan whose sensor label is " + std::to_string(*label) +
+               " bytes long (at most " + std::to_string(kMaxLabelBytes) + ")";
+  }
   throw std::runtime_error(refusal_);
 }
 
