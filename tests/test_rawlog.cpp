@@ -1,6 +1,8 @@
 // The rawlog source: frame counts on MRPT's sample logs (both formats), odometry, bad entries.
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <catch2/catch.hpp>
@@ -237,6 +239,50 @@ TEST_CASE("a 2D scan whose sensor label claims two billion bytes: error, or skip
       "unreadable: a 2D scan whose sensor label is 2000000000 bytes long (at most 65536)");
   CHECK(skip.frames_read == 224);
   CHECK(skip.entries_skipped == 3);  // as for the beams above
+}
+
+TEST_CASE("an odometry observation whose label claims two billion bytes: error, or skipped",
+          "[rawlog]") {
+  // Observations format: scan, odometry, scan, odometry, scan, odometry (entries 0–5), each
+  // written by MRPT 2 (odometry version 2, its pose a CPose2D of version 1).
+  const std::string dir = freshDir("rawlog_odometry");
+  PlainLog log;
+  {
+    mrpt::io::CFileOutputStream out(dir + "/odo.rawlog");
+    auto a = mrpt::serialization::archiveFrom(out);
+    for (int i = 0; i < 6; ++i) {
+      log.offsets.push_back(out.getPosition());
+      log.is_frame.push_back(i % 2 == 0);
+      const auto t = mrpt::Clock::fromDouble(1.7e9 + 0.1 * i);
+      if (i % 2 == 0) {
+        mrpt::obs::CObservation2DRangeScan scan;
+        scan.timestamp = t;
+        scan.aperture = 3.0f;
+        scan.resizeScanAndAssign(181, 2.0f, true);
+        a << scan;
+      } else {
+        mrpt::obs::CObservationOdometry odo;
+        odo.timestamp = t;
+        odo.sensorLabel = "ODOMETRY";
+        odo.odometry = mrpt::poses::CPose2D(0.1 * i, 0, 0);
+        a << odo;
+      }
+    }
+  }
+  log.bytes = readFile(dir + "/odo.rawlog");
+  const std::size_t bad = 3;
+  // The header (0x80 | 31, the name, version 2), the pose object (1 + 20 + 1 + 3 doubles + the
+  // end-of-object byte), then the label's length and the label.
+  const std::size_t label = log.offsets[bad] + 1 + 31 + 1 + 47;
+  REQUIRE(log.bytes.compare(log.offsets[bad], 33, "\x9Fmrpt::obs::CObservationOdometry\x02") == 0);
+  REQUIRE(log.bytes.compare(label, 12, std::string("\x08\x00\x00\x00ODOMETRY", 12)) == 0);
+  log.bytes.replace(label, 4, "\x00\x94\x35\x77", 4);  // 2·10^9
+  const auto skip = checkRefusedEntry(log, bad, "huge_odometry_label",
+                                      "unreadable: an odometry observation whose sensor label is "
+                                      "2000000000 bytes long (at most 65536)");
+  CHECK(skip.frames_read == 3);  // every scan
+  // The odometry, then (after its pose, read on its own and ignored) its label and timestamp.
+  CHECK(skip.entries_skipped == 2);
 }
 
 TEST_CASE("plain and gz-compressed logs give the same frames", "[rawlog]") {

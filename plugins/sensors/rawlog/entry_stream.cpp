@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "scan_header.h"
+#include "stated_sizes.h"
 
 namespace pedtrack::rawlog {
 
@@ -37,30 +37,18 @@ size_t EntryStream::Read(void* buffer, size_t count) {
   }
   entry_.insert(entry_.end(), out, out + n);
   position_ += n;
-  if (!peeking_) checkScanHeader(n);
+  if (!peeking_) checkStatedSizes(n);
   return n;
 }
 
-void EntryStream::checkScanHeader(std::size_t n) {
+void EntryStream::checkStatedSizes(std::size_t n) {
   // MRPT reads an object header as one byte (0x80 | name length), then the name in one read.
   if (n == 0 || n > 127 || entry_.size() < n + 1) return;
   const auto name_at = entry_.end() - std::ptrdiff_t(n);
   if (*(name_at - 1) != (0x80 | n)) return;
-  if (!isScanClassName(std::string(name_at, entry_.end()))) return;
-  const std::optional<ScanHeader> h = readScanHeader(peek(kScanHeaderBytes));
-  if (!h) return;
-  if (h->beams > kMaxScanBeams) {
-    refusal_ = "a 2D scan of " + std::to_string(h->beams) + " beams (at most " +
-               std::to_string(kMaxScanBeams) + ")";
-  } else {
-    // The beams are few enough to read ahead past them (5 bytes each) to the label's length.
-    const std::optional<std::uint32_t> label =
-        readU32(peek(h->labelLengthAt() + 4), h->labelLengthAt());
-    if (!label || *label <= kMaxLabelBytes) return;
-    refusal_ = "a 2D scan whose sensor label is " + std::to_string(*label) +
-               " bytes long (at most " + std::to_string(kMaxLabelBytes) + ")";
-  }
-  throw std::runtime_error(refusal_);
+  refusal_ = refuseStatedSizes(std::string(name_at, entry_.end()),
+                               [this](std::size_t count) { return peek(count); });
+  if (!refusal_.empty()) throw std::runtime_error(refusal_);
 }
 
 bool EntryStream::readByte(std::uint8_t& b) {

@@ -2,8 +2,8 @@
 // A read-only MRPT stream over a rawlog (gz-compressed or plain) that remembers the bytes of the
 // entry being read, so that after a corrupt entry it can scan forward for the next object header
 // and resume there. Memory stays bounded by the largest entry. It also refuses an entry whose 2D
-// scan claims more beams than a scanner gives, before MRPT sizes memory to the count
-// (scan_header.h).
+// scan claims more beams than a scanner gives, or a sensor label of gigabytes, before MRPT sizes
+// memory to them (stated_sizes.h).
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CStream.h>
 
@@ -43,9 +43,10 @@ class EntryStream : public mrpt::io::CStream {
 
  private:
   bool readByte(std::uint8_t& b);
-  /// After a read of n bytes: when they were a 2D scan's class name (its object header's 0x80 | n
-  /// just before), throws if the scan's beam count, still unread, exceeds kMaxScanBeams.
-  void checkScanHeader(std::size_t n);
+  /// After a read of n bytes: when they were a class name (its object header's 0x80 | n just
+  /// before), throws if the sizes the object states, still unread, are beyond reason
+  /// (refuseStatedSizes).
+  void checkStatedSizes(std::size_t n);
   mrpt::io::CFileGZInputStream in_;
   std::deque<std::uint8_t> pending_;  // bytes given back by resync(), served before `in_`
   std::vector<std::uint8_t> entry_;

@@ -1,0 +1,30 @@
+#pragma once
+// Sizes an MRPT object states in a rawlog, checked before MRPT allocates them.
+//
+// MRPT sizes memory to a count or a string length it reads, before it reads what was counted:
+// - a 2D scan's three arrays (ranges, validity, intensities: 9 bytes a beam) to its beam count.
+//   A corrupt count of 10^9 (fuzz_rawlog found one) made it allocate and zero-fill 8.8 GB
+//   before the read failed;
+// - a string (a scan's or odometry's sensor label) to its 32-bit length, up to 4 GiB.
+// A 2D scanner gives at most tens of thousands of beams a scan and a label is a name, so for
+// these two classes, the most common in 2D rawlogs, the sizes are read ahead and checked first.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace pedtrack::rawlog {
+
+/// Most beams a 2D scan may have (the largest 2D scanners give ~25,000 a turn).
+constexpr std::uint32_t kMaxScanBeams = 1000000;
+/// Longest sensor label, bytes.
+constexpr std::uint32_t kMaxLabelBytes = 65536;
+
+/// `peek(n)`: up to n of the bytes that follow the class name MRPT has just read (the object's
+/// version first), left unread. Returns why the object must be refused (a size above the
+/// limits), or "" when nothing is wrong, the class is not one checked, or its layout is not one
+/// MRPT 2 writes (MRPT then reads it as it always did).
+std::string refuseStatedSizes(const std::string& class_name,
+                              const std::function<std::vector<std::uint8_t>(std::size_t)>& peek);
+
+}  // namespace pedtrack::rawlog
