@@ -1,9 +1,18 @@
 #include "stated_sizes.h"
 
+#include <mrpt/rtti/CObject.h>
+
 #include <optional>
 
 namespace pedtrack::rawlog {
 namespace {
+
+// The class MRPT takes a stated name for: it drops any namespace ("mrjt::obs::X", "X" and
+// "mrpt::obs::X" all read as X; fuzz_rawlog found a scan named the first way).
+bool isClass(const std::string& name, const char* canonical) {
+  const mrpt::rtti::TRuntimeClassId* id = mrpt::rtti::findRegisteredClass(name);
+  return id != nullptr && std::string(id->className) == canonical;
+}
 
 std::optional<std::uint32_t> readU32(const std::vector<std::uint8_t>& b, std::size_t at) {
   if (b.size() < at + 4) return std::nullopt;
@@ -15,14 +24,13 @@ std::optional<std::uint32_t> readU32(const std::vector<std::uint8_t>& b, std::si
 // doubles, MRPT's end-of-object 0x88. The offset after it, or nullopt for another class or
 // version. `doubles(version)`: how many doubles that version writes (0: not known).
 std::optional<std::size_t> skipPose(const std::vector<std::uint8_t>& b, std::size_t at,
-                                    const std::string& short_name,
-                                    std::size_t (*doubles)(int version)) {
+                                    const char* class_name, std::size_t (*doubles)(int version)) {
   if (b.size() <= at || !(b[at] & 0x80)) return std::nullopt;
   const std::size_t len = b[at] & 0x7F;
   if (b.size() < at + 1 + len + 1) return std::nullopt;
   const std::string name(b.begin() + std::ptrdiff_t(at + 1),
                          b.begin() + std::ptrdiff_t(at + 1 + len));
-  if (name != "mrpt::poses::" + short_name && name != short_name) return std::nullopt;
+  if (!isClass(name, class_name)) return std::nullopt;
   at += 1 + len;
   const std::size_t n = doubles(b[at++]);
   if (n == 0) return std::nullopt;
@@ -52,7 +60,8 @@ std::string labelTooLong(const char* what, std::uint32_t bytes) {
 std::string refuseScan(const std::function<std::vector<std::uint8_t>(std::size_t)>& peek) {
   const std::vector<std::uint8_t> b = peek(1 + 9 + 1 + 127 + 1 + 96 + 1 + 4);
   if (b.empty() || (b[0] != 6 && b[0] != 7)) return "";
-  const std::optional<std::size_t> count_at = skipPose(b, 1 + 9, "CPose3D", pose3dDoubles);
+  const std::optional<std::size_t> count_at =
+      skipPose(b, 1 + 9, "mrpt::poses::CPose3D", pose3dDoubles);
   if (!count_at) return "";
   const std::optional<std::uint32_t> beams = readU32(b, *count_at);
   if (!beams) return "";
@@ -69,7 +78,7 @@ std::string refuseScan(const std::function<std::vector<std::uint8_t>(std::size_t
 std::string refuseOdometry(const std::function<std::vector<std::uint8_t>(std::size_t)>& peek) {
   const std::vector<std::uint8_t> b = peek(1 + 1 + 127 + 1 + 24 + 1 + 4);
   if (b.empty() || b[0] > 2) return "";
-  const std::optional<std::size_t> label_at = skipPose(b, 1, "CPose2D", pose2dDoubles);
+  const std::optional<std::size_t> label_at = skipPose(b, 1, "mrpt::poses::CPose2D", pose2dDoubles);
   if (!label_at) return "";
   const std::optional<std::uint32_t> label = readU32(b, *label_at);
   return label && *label > kMaxLabelBytes ? labelTooLong("an odometry observation", *label) : "";
@@ -79,10 +88,8 @@ std::string refuseOdometry(const std::function<std::vector<std::uint8_t>(std::si
 
 std::string refuseStatedSizes(const std::string& class_name,
                               const std::function<std::vector<std::uint8_t>(std::size_t)>& peek) {
-  if (class_name == "mrpt::obs::CObservation2DRangeScan" || class_name == "CObservation2DRangeScan")
-    return refuseScan(peek);
-  if (class_name == "mrpt::obs::CObservationOdometry" || class_name == "CObservationOdometry")
-    return refuseOdometry(peek);
+  if (isClass(class_name, "mrpt::obs::CObservation2DRangeScan")) return refuseScan(peek);
+  if (isClass(class_name, "mrpt::obs::CObservationOdometry")) return refuseOdometry(peek);
   return "";
 }
 
