@@ -350,3 +350,11 @@ TEST_CASE(
   // through).
   checkRawlogRegression("scan_beam_count_other_namespace.rawlog");
 }
+
+TEST_CASE(
+    "a rawlog found by fuzzing (a frame named 'mrpt::ofs::...' of 976,909,158 "
+    "observations) ends in one clear error",
+    "[rawlog][fuzz]") {
+  // The frame-count check matched the names exactly too and let MRPT grow the deque to 5.9 GB.
+  checkRawlogRegression("frame_count_other_namespace.rawlog");
+}

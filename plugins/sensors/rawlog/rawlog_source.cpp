@@ -5,6 +5,7 @@
 #include <mrpt/obs/CActionRobotMovement3D.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/datetime.h>
 
@@ -166,12 +167,17 @@ class RawlogSource : public Sensor {
     if (h.empty() || !(h[0] & 0x80)) return;  // MRPT's old format, or the end: MRPT decides
     const std::size_t len = h[0] & 0x7F;
     if (h.size() < 2 + len) return;
-    const std::string name(h.begin() + 1, h.begin() + 1 + std::ptrdiff_t(len));
+    // The class as MRPT takes the name: any namespace dropped ("mrpt::ofs::CSensoryFrame" is a
+    // frame to it; fuzz_rawlog found one).
+    const auto* id = mrpt::rtti::findRegisteredClass(
+        std::string(h.begin() + 1, h.begin() + 1 + std::ptrdiff_t(len)));
+    if (id == nullptr) return;
+    const std::string name = id->className;
     const int version = h[1 + len];
     std::size_t at = 2 + len;
-    if (name == "mrpt::obs::CSensoryFrame" || name == "CSensoryFrame")
+    if (name == "mrpt::obs::CSensoryFrame")
       at += version == 0 ? 12 : version == 1 ? 4 : 0;
-    else if (name != "mrpt::obs::CActionCollection" && name != "CActionCollection")
+    else if (name != "mrpt::obs::CActionCollection")
       return;
     if (h.size() < at + 4) return;
     const std::uint32_t n = std::uint32_t(h[at]) | std::uint32_t(h[at + 1]) << 8 |
