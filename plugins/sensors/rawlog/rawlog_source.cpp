@@ -5,7 +5,6 @@
 #include <mrpt/obs/CActionRobotMovement3D.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
-#include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/datetime.h>
 
@@ -125,7 +124,6 @@ class RawlogSource : public Sensor {
     for (;;) {
       stream_.beginEntry();
       try {
-        checkEntryCount();
         auto obj = archive_.ReadObject();
         ++entry_;
         return obj;
@@ -155,43 +153,6 @@ class RawlogSource : public Sensor {
       }
     }
   }
-
-  // MRPT sizes a sensory frame's observations (an action collection's actions) to the count the
-  // file gives before it reads one of them, and they are a deque: a corrupt count of 10^9
-  // (fuzz_rawlog found one) allocated block after block up to 16 GB instead of failing. A frame
-  // holds one observation per sensor, so the count is checked in the entry's header first:
-  // 0x80 | name length, the class name, the version byte, then (CSensoryFrame version 0: an id
-  // and a timestamp; version 1: an id) the 32-bit count.
-  void checkEntryCount() {
-    const std::vector<std::uint8_t> h = stream_.peek(1 + 127 + 1 + 12 + 4);
-    if (h.empty() || !(h[0] & 0x80)) return;  // MRPT's old format, or the end: MRPT decides
-    const std::size_t len = h[0] & 0x7F;
-    if (h.size() < 2 + len) return;
-    // The class as MRPT takes the name: any namespace dropped ("mrpt::ofs::CSensoryFrame" is a
-    // frame to it; fuzz_rawlog found one).
-    const auto* id = mrpt::rtti::findRegisteredClass(
-        std::string(h.begin() + 1, h.begin() + 1 + std::ptrdiff_t(len)));
-    if (id == nullptr) return;
-    const std::string name = id->className;
-    const int version = h[1 + len];
-    std::size_t at = 2 + len;
-    if (name == "mrpt::obs::CSensoryFrame")
-      at += version == 0 ? 12 : version == 1 ? 4 : 0;
-    else if (name != "mrpt::obs::CActionCollection")
-      return;
-    if (h.size() < at + 4) return;
-    const std::uint32_t n = std::uint32_t(h[at]) | std::uint32_t(h[at + 1]) << 8 |
-                            std::uint32_t(h[at + 2]) << 16 | std::uint32_t(h[at + 3]) << 24;
-    if (n <= kMaxEntryItems) return;
-    // Its first byte consumed, so that skip_bad resynchronises past this entry's header, not
-    // onto it again.
-    std::uint8_t first = 0;
-    stream_.Read(&first, 1);
-    throw std::runtime_error("a " + name + " of " + std::to_string(n) + " items (at most " +
-                             std::to_string(kMaxEntryItems) + ")");
-  }
-
-  static constexpr std::uint32_t kMaxEntryItems = 65536;
 
   std::string file_;
   EntryStream stream_;

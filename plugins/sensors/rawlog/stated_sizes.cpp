@@ -84,12 +84,32 @@ std::string refuseOdometry(const std::function<std::vector<std::uint8_t>(std::si
   return label && *label > kMaxLabelBytes ? labelTooLong("an odometry observation", *label) : "";
 }
 
+// CSensoryFrame: the version, (version 0: an id and a timestamp; version 1: an id), then the
+// observations' count. CActionCollection: the version, then the actions' count. MRPT grows a
+// deque to the count before reading one (fuzz_rawlog: 10^9 grew it towards 15 GB); a frame
+// holds one observation per sensor.
+std::string refuseItemCount(const char* name,
+                            const std::function<std::vector<std::uint8_t>(std::size_t)>& peek,
+                            bool frame) {
+  const std::vector<std::uint8_t> b = peek(1 + 12 + 4);
+  if (b.empty()) return "";
+  const std::size_t at = 1 + (frame ? (b[0] == 0 ? 12 : b[0] == 1 ? 4 : 0) : 0);
+  const std::optional<std::uint32_t> n = readU32(b, at);
+  if (!n || *n <= kMaxEntryItems) return "";
+  return std::string("a ") + name + " of " + std::to_string(*n) + " items (at most " +
+         std::to_string(kMaxEntryItems) + ")";
+}
+
 }  // namespace
 
 std::string refuseStatedSizes(const std::string& class_name,
                               const std::function<std::vector<std::uint8_t>(std::size_t)>& peek) {
   if (isClass(class_name, "mrpt::obs::CObservation2DRangeScan")) return refuseScan(peek);
   if (isClass(class_name, "mrpt::obs::CObservationOdometry")) return refuseOdometry(peek);
+  if (isClass(class_name, "mrpt::obs::CSensoryFrame"))
+    return refuseItemCount("mrpt::obs::CSensoryFrame", peek, true);
+  if (isClass(class_name, "mrpt::obs::CActionCollection"))
+    return refuseItemCount("mrpt::obs::CActionCollection", peek, false);
   return "";
 }
 

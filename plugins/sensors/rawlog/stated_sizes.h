@@ -5,9 +5,10 @@
 // - a 2D scan's three arrays (ranges, validity, intensities: 9 bytes a beam) to its beam count.
 //   A corrupt count of 10^9 (fuzz_rawlog found one) made it allocate and zero-fill 8.8 GB
 //   before the read failed;
-// - a string (a scan's or odometry's sensor label) to its 32-bit length, up to 4 GiB.
+// - a string (a scan's or odometry's sensor label) to its 32-bit length, up to 4 GiB;
+// - a sensory frame's observations (an action collection's actions), a deque, to its count.
 // A 2D scanner gives at most tens of thousands of beams a scan and a label is a name, so for
-// these two classes, the most common in 2D rawlogs, the sizes are read ahead and checked first.
+// these classes, the most common in 2D rawlogs, the sizes are read ahead and checked first.
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -17,6 +18,8 @@ namespace pedtrack::rawlog {
 
 /// Most beams a 2D scan may have (the largest 2D scanners give ~25,000 a turn).
 constexpr std::uint32_t kMaxScanBeams = 1000000;
+/// Most observations in a sensory frame (actions in an action collection).
+constexpr std::uint32_t kMaxEntryItems = 65536;
 /// Longest sensor label, bytes.
 constexpr std::uint32_t kMaxLabelBytes = 65536;
 
