@@ -3,8 +3,7 @@
 // entry being read, so that after a corrupt entry it can scan forward for the next object header
 // and resume there. Memory stays bounded by the largest entry. It also refuses an entry whose 2D
 // scan claims more beams than a scanner gives, a sensor label of gigabytes or a frame of a
-// billion observations, before MRPT sizes
-// memory to them (stated_sizes.h).
+// billion observations, before MRPT sizes memory to them (stated_sizes.h).
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CStream.h>
 
