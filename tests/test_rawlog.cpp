@@ -358,3 +358,110 @@ TEST_CASE(
   // The frame-count check matched the names exactly too and let MRPT grow the deque to 5.9 GB.
   checkRawlogRegression("frame_count_other_namespace.rawlog");
 }
+
+namespace {
+
+std::string u32le(std::uint32_t v) {
+  std::string s(4, '\0');
+  for (int i = 0; i < 4; ++i) s[i] = char(v >> (8 * i) & 0xFF);
+  return s;
+}
+
+// A matrix object as MRPT writes one: header, CMatrixF (float) or CMatrixD (double) version 0,
+// rows, columns, the elements (here the identity), MRPT's end-of-object byte.
+std::string matrixObject(bool doubles, std::uint32_t rows, std::uint32_t cols) {
+  std::string s = std::string(doubles ? "\x94mrpt::math::CMatrixD" : "\x94mrpt::math::CMatrixF") +
+                  '\0' + u32le(rows) + u32le(cols);
+  for (std::uint32_t r = 0; r < rows; ++r)
+    for (std::uint32_t c = 0; c < cols; ++c) {
+      const double v = r == c ? 1 : 0;
+      const float f = float(v);
+      s += doubles ? std::string(reinterpret_cast<const char*>(&v), 8)
+                   : std::string(reinterpret_cast<const char*>(&f), 4);
+    }
+  return s + "\x88";
+}
+
+// Three 181-beam scans (observations format) written by MRPT 2, the middle one rewritten in
+// the layout of an older scan version: a covariance matrix after the sensor pose (versions
+// 0-5), no label before version 5, no beamAperture before 4, no stdError / timestamp before
+// 2 / 3; with `pose_v1`, its pose a CPose3D of version 1 (a 4 x 4 CMatrixD inside). `count_at`:
+// where the old scan's beam count lies.
+struct OldScanLog {
+  PlainLog log;
+  std::size_t count_at = 0, cov_at = 0;
+};
+
+OldScanLog oldScanLog(int version, bool pose_v1) {
+  const std::string dir = freshDir("rawlog_old_scan");
+  OldScanLog o;
+  {
+    mrpt::io::CFileOutputStream out(dir + "/scans.rawlog");
+    auto a = mrpt::serialization::archiveFrom(out);
+    for (int i = 0; i < 3; ++i) {
+      o.log.offsets.push_back(out.getPosition());
+      o.log.is_frame.push_back(true);
+      mrpt::obs::CObservation2DRangeScan scan;
+      scan.timestamp = mrpt::Clock::fromDouble(1.7e9 + 0.1 * i);
+      scan.aperture = 3.0f;
+      scan.resizeScanAndAssign(181, 2.0f, true);
+      a << scan;
+    }
+    o.log.offsets.push_back(out.getPosition());
+  }
+  const std::string v7 = readFile(dir + "/scans.rawlog");
+  const std::size_t at = o.log.offsets[1], end = o.log.offsets[2];
+  const std::string header = "\xA2mrpt::obs::CObservation2DRangeScan";
+  REQUIRE(v7.compare(at, header.size() + 1, header + "\x07") == 0);
+  const std::size_t pose_at = at + header.size() + 1 + 9, count_at = pose_at + 22 + 96 + 1;
+  REQUIRE(v7.compare(pose_at, 22, "\x94mrpt::poses::CPose3D\x03") == 0);
+  REQUIRE(v7.compare(end - 2, 2, std::string("\x00\x88", 2)) == 0);  // no intensity; the end
+  const std::size_t beams = 4 + 5 * 181;
+  const std::size_t tail = version >= 5   ? end - 2 - count_at  // up to deltaPitch
+                           : version == 4 ? beams + 16          // up to beamAperture
+                                          : beams - (version == 0 ? 181 : 0) +
+                                                (version >= 2 ? 4 : 0) + (version >= 3 ? 8 : 0);
+  std::string scan = header + char(version) + v7.substr(at + header.size() + 1, 9);
+  scan += pose_v1 ? "\x94mrpt::poses::CPose3D\x01" + matrixObject(true, 4, 4) + "\x88"
+                  : v7.substr(pose_at, count_at - pose_at);
+  o.cov_at = at + scan.size();
+  if (version < 6) scan += matrixObject(false, 3, 3);
+  o.count_at = at + scan.size();
+  scan += (version == 0 ? v7.substr(count_at, 4 + 4 * 181) : v7.substr(count_at, tail)) + "\x88";
+  o.log.bytes = v7.substr(0, at) + scan + v7.substr(end);
+  o.log.offsets[2] = at + scan.size();
+  o.log.offsets.pop_back();
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("2D scans of older layouts are read, and their beam counts checked too", "[rawlog]") {
+  // MRPT 2 writes scan version 7, but reads 0-7; an old log's scan claiming 2·10^9 beams would
+  // make it size 18 GB as well.
+  for (const auto& [version, pose_v1] :
+       {std::pair{5, false}, {4, true}, {3, true}, {1, false}, {0, false}, {6, true}}) {
+    INFO("scan version " << version << (pose_v1 ? ", pose version 1" : ""));
+    OldScanLog o = oldScanLog(version, pose_v1);
+    const std::string dir = freshDir("rawlog_old_scan_ok");
+    writeFile(dir + "/old.rawlog", o.log.bytes);
+    const std::vector<Frame> frames = readFrames(dir + "/old.rawlog");
+    REQUIRE(frames.size() == 3);
+    CHECK(frames[1].cloud().size() == frames[0].cloud().size());
+    o.log.bytes.replace(o.count_at, 4, u32le(2000000000));
+    const auto skip = checkRefusedEntry(o.log, 1, "old_scan_beams",
+                                        "unreadable: a 2D scan of 2000000000 beams (at most "
+                                        "1000000)");
+    CHECK(skip.frames_read == 2);
+  }
+}
+
+TEST_CASE("a matrix object claiming 10^10 elements: error, or skipped", "[rawlog]") {
+  // An old scan's covariance: MRPT would size the matrix (40 GB of floats) before reading it.
+  OldScanLog o = oldScanLog(5, false);
+  o.log.bytes.replace(o.cov_at + 22, 8, u32le(100000) + u32le(100000));
+  const auto skip = checkRefusedEntry(
+      o.log, 1, "huge_matrix",
+      "unreadable: a 100000 x 100000 matrix (40000000000 bytes; at most 33554432 elements)");
+  CHECK(skip.frames_read == 2);
+}
