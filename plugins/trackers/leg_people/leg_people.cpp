@@ -55,6 +55,7 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.tentative_sigma_xy = s.getDouble("tentative_sigma_xy");
   p.report_heading_speed = s.getDouble("report_heading_speed");
   p.report_heading_window = s.getDouble("report_heading_window");
+  p.support_gate = s.getDouble("support_gate");
   return p;
 }
 
@@ -94,7 +95,7 @@ class LegPeople : public Tracker {
     std::function<bool(double, double)> is_static;
     if (scene_)
       is_static = [&](double x, double y) { return scene_->isStatic(x, y, f.t, static_radius_); };
-    tracker_.step(f.t, legs, is_static);
+    tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f));
     if (scene_) scene_->update(f, tracker_.occupiedByPeople());
     const auto people = tracker_.people();
     chooseFollowed(f, people);
@@ -149,6 +150,30 @@ class LegPeople : public Tracker {
       d.sensor = nearestSensor(f, d.p);
       d.cluster = int(i);
       out.push_back(d);
+    }
+    return out;
+  }
+
+  // The scan's returns in the fixed frame that are part of no leg circle (support_gate): a leg
+  // seen by one or two beams.
+  std::vector<LegReturn> returnsOutsideLegs(const Frame& f) const {
+    const auto& cloud = f.cloud();
+    std::vector<bool> in_leg(cloud.size(), false);
+    for (const Cluster& c : f.clusters)
+      for (std::uint32_t i : c.indices)
+        if (i < in_leg.size()) in_leg[i] = true;
+    std::vector<LegReturn> out;
+    out.reserve(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      if (in_leg[i] || !f.isKept(i)) continue;
+      float x, y, z;
+      cloud.getPoint(i, x, y, z);
+      LegReturn r;
+      double gx, gy, gz;
+      f.robot_pose.composePoint(x, y, z, gx, gy, gz);
+      r.p = {gx, gy};
+      r.sensor = nearestSensor(f, r.p);
+      out.push_back(r);
     }
     return out;
   }
@@ -366,6 +391,10 @@ PluginDescriptor describe() {
                       "a person unseen longer than this is no longer written (kept until "
                       "deleted, max_coast / max_coast_confirmed, so their legs can be "
                       "re-acquired behind an occlusion)"),
+      ParamSpec::real("support_gate", def.support_gate, "m", 0, 10,
+                      "a confirmed person's leg no leg circle shows is still seen where scan "
+                      "returns of no leg circle (one or two beams: far, or all but hidden) lie "
+                      "within this of where the gait predicts it; 0: off"),
       ParamSpec::boolean("resolve_swaps", true,
                          "a turn in place of over 90° between two scans is read as the person's "
                          "legs swapped by the assignment (the nearer perpendicular), not a turn"),
