@@ -10,6 +10,7 @@
 
 #include "pedtrack/errors.h"
 #include "pedtrack/plugin.h"
+#include "pedtrack/point_labels.h"
 #include "pedtrack/track/gait_fit_ipopt.h"
 #include "pedtrack/track/leg_people_tracker.h"
 #include "pedtrack/track/leg_pose_params.h"
@@ -67,7 +68,8 @@ class LegPeople : public Tracker {
         follow_(ctx.params.getString("follow")),
         follow_zone_(ctx.params.getVector("follow_zone")),
         static_radius_(ctx.params.getDouble("static_radius")),
-        report_coast_(ctx.params.getDouble("report_coast")) {
+        report_coast_(ctx.params.getDouble("report_coast")),
+        support_(ctx.params.getDouble("support_gate") > 0) {
     if (ctx.params.getBool("static_scene")) {
       StaticScene::Options o;
       o.persist = ctx.params.getDouble("static_persist");
@@ -155,17 +157,14 @@ class LegPeople : public Tracker {
   }
 
   // The scan's returns in the fixed frame that are part of no leg circle (support_gate): a leg
-  // seen by one or two beams.
+  // seen by one or two beams, or by many that fit no circle. None when support_gate is off.
   std::vector<LegReturn> returnsOutsideLegs(const Frame& f) const {
+    if (!support_) return {};
+    const std::vector<std::int32_t> labels = runLabels(f).labels;
     const auto& cloud = f.cloud();
-    std::vector<bool> in_leg(cloud.size(), false);
-    for (const Cluster& c : f.clusters)
-      for (std::uint32_t i : c.indices)
-        if (i < in_leg.size()) in_leg[i] = true;
     std::vector<LegReturn> out;
-    out.reserve(cloud.size());
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-      if (in_leg[i] || !f.isKept(i)) continue;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      if (labels[i] != run_label::kUnclustered) continue;  // a leg's, the ground's, removed
       float x, y, z;
       cloud.getPoint(i, x, y, z);
       LegReturn r;
@@ -284,6 +283,7 @@ class LegPeople : public Tracker {
   std::vector<double> follow_zone_;
   double static_radius_;
   double report_coast_;
+  bool support_;  // support_gate > 0: the tracker is given the returns of no leg circle
   mutable bool classifier_seen_ = false;
 };
 
@@ -393,8 +393,9 @@ PluginDescriptor describe() {
                       "re-acquired behind an occlusion)"),
       ParamSpec::real("support_gate", def.support_gate, "m", 0, 10,
                       "a confirmed person's leg no leg circle shows is still seen where scan "
-                      "returns of no leg circle (one or two beams: far, or all but hidden) lie "
-                      "within this of where the gait predicts it; 0: off"),
+                      "returns of no leg circle (one or two beams: far, or all but hidden; many "
+                      "that fit no circle: wide trousers) lie within this of where the gait "
+                      "predicts it, off the static scene; 0: off"),
       ParamSpec::boolean("resolve_swaps", true,
                          "a turn in place of over 90° between two scans is read as the person's "
                          "legs swapped by the assignment (the nearer perpendicular), not a turn"),
