@@ -62,8 +62,6 @@ std::string labelTooLong(const char* what, std::uint32_t bytes) {
          " bytes long (at most " + std::to_string(kMaxLabelBytes) + ")";
 }
 
-using Peek = std::function<std::vector<std::uint8_t>(std::size_t)>;
-
 // CObservation2DRangeScan, every version MRPT reads (0-7): the version; aperture (float),
 // rightToLeft (bool), maxRange (float); the sensor pose (a CPose3D); before version 6 the pose's
 // covariance (a CMatrixF); the beam count; the beams' ranges (float) and, from version 1, their
@@ -129,8 +127,7 @@ std::string refuseItemCount(const char* name, const Peek& peek, bool frame) {
 
 }  // namespace
 
-std::string refuseStatedSizes(const std::string& class_name,
-                              const std::function<std::vector<std::uint8_t>(std::size_t)>& peek) {
+std::string refuseStatedSizes(const std::string& class_name, const Peek& peek) {
   const std::string cls = classOf(class_name);
   if (cls.empty()) return "";
   if (cls == "mrpt::obs::CObservation2DRangeScan") return refuseScan(peek);

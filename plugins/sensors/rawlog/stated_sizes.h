@@ -29,10 +29,12 @@ constexpr std::uint32_t kMaxLabelBytes = 65536;
 constexpr std::uint64_t kMaxMatrixElements = std::uint64_t(1) << 25;
 
 /// `peek(n)`: up to n of the bytes that follow the class name MRPT has just read (the object's
-/// version first), left unread. Returns why the object must be refused (a size above the
+/// version first), left unread.
+using Peek = std::function<std::vector<std::uint8_t>(std::size_t)>;
+
+/// Why the object whose class name MRPT has just read must be refused (a size above the
 /// limits), or "" when nothing is wrong, the class is not one checked, or its layout is not one
 /// MRPT reads (MRPT then fails on it as it always did).
-std::string refuseStatedSizes(const std::string& class_name,
-                              const std::function<std::vector<std::uint8_t>(std::size_t)>& peek);
+std::string refuseStatedSizes(const std::string& class_name, const Peek& peek);
 
 }  // namespace pedtrack::rawlog
