@@ -1,6 +1,6 @@
 #pragma once
-// Shared by the leg tests (test_legs.cpp, test_leg_pose_estimator.cpp): a synthetic walker's
-// legs and the angle between two headings.
+// Shared by the leg tests (test_legs.cpp, test_leg_pose_parts.cpp, test_leg_pose_estimator.cpp): a
+// synthetic walker's legs and the angle between two headings.
 #include <Eigen/Core>
 #include <cmath>
 #include <utility>
