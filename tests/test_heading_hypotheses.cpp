@@ -125,6 +125,25 @@ TEST_CASE("a hidden leg bounds the heading to the ray's perpendicular, either wa
   CHECK(h.all()[1].log_w == Approx(std::log(clutter) - std::log(bound + clutter)).margin(1e-3));
 }
 
+TEST_CASE("on a hidden leg's bound the turn rate relaxes with hidden_turn_tau", "[heading]") {
+  // A hypothesis turning at 1 rad/s, then one scan (0.1 s) whose reading is a bound: the predict
+  // step decays the rate by e^(-0.1/turn_tau), the bound by e^(-0.1/hidden_turn_tau) more (the
+  // acceleration likewise). The legs showed no turn ending, so the turn must not run on unseen.
+  for (const double tau : {0.0, 0.2}) {
+    HeadingHypothesesParams p;
+    p.hidden_turn_tau = tau;
+    HeadingHypotheses h(p);
+    h.start(Eigen::Vector3d(0, 1.0, 0), Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal());
+    h.predict(0.1, 0.0, 0.0, false);
+    h.update(hiddenLegHeadingBound({0.0, 0.18}, 1.0, 0.1), {0, 0}, 0.1, 0.1, 0);
+    const double after_predict = std::exp(-0.1 / p.turn_tau);
+    const double bound = tau > 0 ? std::exp(-0.1 / tau) : 1.0;
+    INFO("hidden_turn_tau " << tau);
+    CHECK(h.best().x(0) == Approx(0.1));  // the heading took the rate over the step, unbounded
+    CHECK(h.best().x(1) == Approx(after_predict * bound));
+  }
+}
+
 TEST_CASE("unseen, the turn rate's variance stays within rate_sigma_max", "[heading]") {
   HeadingHypothesesParams p;
   p.turn_tau = 0;  // P3's constant acceleration, whose variances grow fastest

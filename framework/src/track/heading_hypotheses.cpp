@@ -191,6 +191,11 @@ void HeadingHypotheses::update(const std::vector<HeadingReading>& readings,
         const double log_names = r.mirrored != h.swapped ? log_rename : log_same;
         if (r.spread > 0) {
           Hypothesis c = h;
+          if (p_.hidden_turn_tau > 0 && dt > 0) {
+            const double e = std::exp(-dt / p_.hidden_turn_tau);
+            c.x(1) *= e;
+            c.x(2) *= e;
+          }
           c.swapped = r.mirrored;
           c.log_w += log_names;
           const double out = std::max(0.0, std::abs(nu) - r.spread) / std::max(r.sigma, 1e-3);

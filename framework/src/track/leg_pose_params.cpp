@@ -89,6 +89,9 @@ std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
       ParamSpec::real("heading_turn_tau", d.heading.turn_tau, "s", 0, 3600,
                       "hypotheses: the turn rate reverts to zero with this time constant (people "
                       "turn in bursts; 0: P3's constant acceleration)"),
+      ParamSpec::real("heading_hidden_turn_tau", d.heading.hidden_turn_tau, "s", 0, 3600,
+                      "hypotheses: ... and with this one on a scan where a leg is hidden (a "
+                      "bound only, which cannot show a turn ending; 0: off)"),
       ParamSpec::real("heading_stop_turn", d.heading.stop_turn_prior, "", 0, 0.5,
                       "hypotheses: chance per scan that a turn ends (a child with the turn rate "
                       "zeroed)"),
@@ -163,6 +166,7 @@ LegPoseParams readLegPoseParams(const ParamSet& s) {
   p.heading.sigma_floor = s.getDouble("heading_sigma_floor") * rad;
   p.heading.motion_speed = s.getDouble("heading_motion_speed");
   p.heading.turn_tau = s.getDouble("heading_turn_tau");
+  p.heading.hidden_turn_tau = s.getDouble("heading_hidden_turn_tau");
   p.heading.stop_turn_prior = s.getDouble("heading_stop_turn");
   p.heading.start_turn_prior = s.getDouble("heading_start_turn");
   p.heading.rate_sigma_max = s.getDouble("heading_rate_sigma_max") * rad;

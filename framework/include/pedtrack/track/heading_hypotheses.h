@@ -57,6 +57,12 @@ struct HeadingHypothesesParams {
   /// transition's diagonal decays (the heading takes the undecayed rate over the step: ~10 %
   /// more turn at 0.1 s and 0.5 s, well inside the noise).
   double turn_tau = 0.5;
+  /// s, and with this one (0: off) on a scan whose reading only bounds the heading (a leg
+  /// hidden behind the other): such a reading cannot show a turn ending, so a rate kept at
+  /// turn_tau carried the heading on past where the turn ended, onto the wrong branch of the
+  /// legs' geometry when they came back (P3 scenario 3's walk-off after its turn; over 170
+  /// seeds scenario 1 13.6° -> 10.1°, scenario 3 6.8° -> 5.7°, scenario 4 15.9° -> 16.4°).
+  double hidden_turn_tau = 0.2;
   /// rad, a hidden leg bounds the heading to the ray's perpendicular ± this (atan of the
   /// largest sagittal leg spread over the step width: 0.3 / 0.17 m)
   double hidden_spread = 1.05;
