@@ -90,8 +90,9 @@ std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
                       "hypotheses: the turn rate reverts to zero with this time constant (people "
                       "turn in bursts; 0: P3's constant acceleration)"),
       ParamSpec::real("heading_hidden_turn_tau", d.heading.hidden_turn_tau, "s", 0, 3600,
-                      "hypotheses: ... and with this one on a scan where a leg is hidden (a "
-                      "bound only, which cannot show a turn ending; 0: off)"),
+                      "hypotheses: on a scan where a leg is hidden (a bound only, which cannot "
+                      "show a turn ending) the turn rate also reverts to zero with this time "
+                      "constant (0: off)"),
       ParamSpec::real("heading_stop_turn", d.heading.stop_turn_prior, "", 0, 0.5,
                       "hypotheses: chance per scan that a turn ends (a child with the turn rate "
                       "zeroed)"),
