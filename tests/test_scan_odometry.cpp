@@ -2,7 +2,8 @@
 // scanner with 1 cm noise): a drive and a turn end within 5 cm / 2° of the truth, a standing
 // robot does not drift, scans with too few points (or from elsewhere) give the constant-velocity
 // prediction; in an open space with a few poles and walkers (sparse scans) the drive still ends
-// within 5 cm / 0.3°. Prints the cost of update().
+// within 5 cm / 0.3°; a scan with far fewer points than the recent ones is not matched, nor is a
+// match turned more than max_turn_step from the prediction accepted. Prints the cost of update().
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
@@ -239,4 +240,61 @@ TEST_CASE("in an open space with a few poles and walkers the drive ends within 5
   CHECK(most < ScanOdometryOptions{}.sparse_points);  // sparse all the way, even unthinned
   CHECK(std::hypot(est.x() - truth.x(), est.y() - truth.y()) < 0.05);
   CHECK(angleErr(est, truth) < 0.3 * kDeg);
+}
+
+TEST_CASE("a scan with far fewer points than the recent ones is not matched (min_points_share)",
+          "[scan_odometry]") {
+  // In an open space a passer-by right in front of the scanner can hide most of its few poles:
+  // what is left may match at a wrong rotation. Ten full scans of the room driving straight at
+  // 1 m/s, then one of only the returns within ±20° of straight ahead (under half the cells).
+  const World w = room();
+  for (const double share : {0.5, 0.0}) {
+    std::mt19937 rng(11);
+    ScanOdometryOptions o;
+    o.min_points_share = share;
+    ScanOdometry odo(o);
+    auto truth = [](int k) { return CPose2D(0.1 * k, 0, 0); };
+    for (int k = 0; k < 11; ++k) odo.update(scan(w, kStart + truth(k), rng), 0.1 * k);
+    const long matched = odo.matched();
+    const CPose2D last = odo.pose();
+    std::vector<V2> ahead;
+    for (const V2& p : scan(w, kStart + truth(11), rng))
+      if (std::abs(std::atan2(p.y(), p.x() - 0.3)) < 20 * kDeg) ahead.push_back(p);
+    REQUIRE(ahead.size() >= ScanOdometryOptions{}.min_points);
+    const CPose2D p = odo.update(ahead, 1.1);
+    INFO("min_points_share " << share << ", " << ahead.size() << " points");
+    if (share > 0) {
+      CHECK(odo.skipped() == 1);  // the prediction: 0.1 m on, straight
+      CHECK(odo.matched() == matched);
+      CHECK(p.x() == Approx(last.x() + 0.1).margin(0.01));
+      CHECK(p.phi() == Approx(last.phi()).margin(1e-3));
+    } else {
+      CHECK(odo.skipped() == 0);
+      CHECK(odo.matched() + odo.rejected() == matched + 1);
+    }
+  }
+}
+
+TEST_CASE("a match turned more than max_turn_step from the prediction is rejected",
+          "[scan_odometry]") {
+  // Straight on at 1 m/s, then a scan turned 6° from the straight-on prediction (a jolt no
+  // wheelchair makes; ICP in the room finds it): rejected with a 3° bound, matched by default.
+  const World w = room();
+  for (const double bound : {3.0, 12.0}) {
+    std::mt19937 rng(13);
+    ScanOdometryOptions o;
+    o.max_turn_step = bound * kDeg;
+    ScanOdometry odo(o);
+    for (int k = 0; k < 5; ++k) odo.update(scan(w, kStart + CPose2D(0.1 * k, 0, 0), rng), 0.1 * k);
+    REQUIRE(odo.rejected() == 0);
+    const CPose2D p = odo.update(scan(w, kStart + CPose2D(0.5, 0, 6 * kDeg), rng), 0.5);
+    INFO("max_turn_step " << bound << " deg, pose " << p);
+    if (bound < 6) {
+      CHECK(odo.rejected() == 1);
+      CHECK(std::abs(p.phi()) < 0.5 * kDeg);  // the prediction
+    } else {
+      CHECK(odo.rejected() == 0);
+      CHECK(p.phi() == Approx(6 * kDeg).margin(0.5 * kDeg));
+    }
+  }
 }

@@ -60,7 +60,8 @@ struct ScanOdometry::Impl {
   CPose2D last_pose, prev_pose;
   double last_t = 0, prev_t = 0;
   int n_accepted = 0;
-  long matched = 0, rejected = 0;
+  long matched = 0, rejected = 0, skipped = 0;
+  std::deque<std::size_t> counts;           // thinned points of the last recent_scans scans
   int rejected_run = 0;                     // rejections in a row
   std::unordered_set<std::uint64_t> cells;  // thinning grid, reused (clear() keeps the buckets)
 
@@ -162,10 +163,30 @@ struct ScanOdometry::Impl {
     return local_map;
   }
 
+  // Whether this scan has too few points against the recent ones (min_points_share); records
+  // its count either way.
+  bool suddenlySparse(std::size_t n) {
+    bool few = false;
+    if (opt.min_points_share > 0 && counts.size() >= opt.recent_scans) {
+      std::vector<std::size_t> c(counts.begin(), counts.end());
+      auto mid = c.begin() + std::ptrdiff_t(c.size() / 2);
+      std::nth_element(c.begin(), mid, c.end());
+      few = double(n) < opt.min_points_share * double(*mid);
+    }
+    counts.push_back(n);
+    while (counts.size() > std::max<std::size_t>(opt.recent_scans, 1)) counts.pop_front();
+    return few;
+  }
+
   CPose2D update(const std::vector<Eigen::Vector2d>& pts, double t) {
     const CPose2D pred = predict(t);
     thin(pts, opt.decimation_cell, scan);
+    const bool few = suddenlySparse(scan.size());
     if (scan.size() < opt.min_points) return pose = pred;
+    if (few && have_keyframe) {
+      ++skipped;
+      return pose = pred;
+    }
     if (!have_keyframe) {
       takeKeyframe(pts, pred, false);
       accept(pred, t);
@@ -181,7 +202,8 @@ struct ScanOdometry::Impl {
     mrpt::slam::CICP::TReturnInfo info;
     const auto pdf = icp.Align(local ? &localMap() : &keyframe, &scan, pred - origin, info);
     const CPose2D est = origin + pdf->getMeanVal();
-    const bool ok = info.goodness >= kMinGoodness && (est - pred).norm() <= opt.max_step;
+    const bool ok = info.goodness >= kMinGoodness && (est - pred).norm() <= opt.max_step &&
+                    std::abs(mrpt::math::wrapToPi(est.phi() - pred.phi())) <= opt.max_turn_step;
     if (ok) {
       ++matched;
       rejected_run = 0;
@@ -224,6 +246,9 @@ long ScanOdometry::matched() const {
 }
 long ScanOdometry::rejected() const {
   return impl_->rejected;
+}
+long ScanOdometry::skipped() const {
+  return impl_->skipped;
 }
 
 }  // namespace pedtrack::track

@@ -7,9 +7,10 @@
 // while the robot stays within keyframe_distance / keyframe_angle of the keyframe every match is
 // against the same reference, so errors do not add up (a standing robot does not drift); a new
 // keyframe is taken only once the robot has moved that far. The initial guess is a constant-
-// velocity prediction; a match that disagrees with it by more than max_step, or that few points
-// support, is rejected and the prediction is used instead (counted in rejected()); a rejected
-// scan becomes a keyframe only if the scan before it was rejected too.
+// velocity prediction; a match that disagrees with it by more than max_step or max_turn_step, or
+// that few points support, is rejected and the prediction is used instead (counted in
+// rejected()); a rejected scan becomes a keyframe only if the scan before it was rejected too. A
+// scan with far fewer points than the recent ones (min_points_share) is not matched at all.
 //
 // Open spaces (a plaza or a crowd with a few poles and bins, no walls) give sparse scans: with
 // only the newest keyframe to match, a rotation error accepted once is carried into every later
@@ -39,10 +40,23 @@ struct ScanOdometryOptions {
   /// A match more than this (m) from the constant-velocity prediction is rejected: no wheelchair
   /// changes speed by 10 m/s within a 10 Hz scan, a jump that big is a wrong local minimum.
   double max_step = 1.0;
+  /// ... or turned more than this (rad) from it: no wheelchair changes its turn rate by 120°/s
+  /// within a scan. In an open space a scan of ~25 poles and legs matched 16° off the prediction
+  /// (goodness 0.56) halfway through a 29°/s turn, and the prediction carried the error on; the
+  /// largest a turn's start gave in the simulated crowds was 4°.
+  double max_turn_step = 12.0 * M_PI / 180;
   /// A scan with fewer points than this (after thinning) is not matched: the prediction is used.
   /// A few poles or bins hold a match (10 points: two bins and a pole); with 30, scans of an
   /// open space went unmatched for seconds and the prediction carried a turn on.
   std::size_t min_points = 10;
+  /// A scan with fewer points than this share of the median of the last recent_scans scans
+  /// (after thinning) is not matched either: most of the view is suddenly hidden (passers-by
+  /// right in front of the scanner), and a handful of poles and moving legs is what is left. In
+  /// an open space such scans of 14-17 points matched at a wrong rotation (4-10° a scan off the
+  /// prediction, goodness 0.5-0.8), and the constant-velocity prediction then carried the turn on
+  /// for good (a following wheelchair's estimate turned 90° in a second). 0: off.
+  double min_points_share = 0.5;
+  std::size_t recent_scans = 10;
   /// A scan with fewer points than this (after thinning) is sparse: every point is queried in
   /// every ICP iteration (else a third, a different third each round), and the reference is the
   /// last local_keyframes keyframes together.
@@ -74,6 +88,8 @@ class ScanOdometry {
   /// match count in neither.
   long matched() const;
   long rejected() const;
+  /// Scans not matched for having far fewer points than the recent ones (min_points_share).
+  long skipped() const;
 
  private:
   // CICP and the point maps live in the .cpp: mrpt-slam stays a private dependency of the
