@@ -40,10 +40,11 @@ struct ScanOdometryOptions {
   /// A match more than this (m) from the constant-velocity prediction is rejected: no wheelchair
   /// changes speed by 10 m/s within a 10 Hz scan, a jump that big is a wrong local minimum.
   double max_step = 1.0;
-  /// ... or turned more than this (rad) from it: no wheelchair changes its turn rate by 120°/s
-  /// within a scan. In an open space a scan of ~25 poles and legs matched 16° off the prediction
-  /// (goodness 0.56) halfway through a 29°/s turn, and the prediction carried the error on; the
-  /// largest a turn's start gave in the simulated crowds was 4°.
+  /// ... or turned more than this (rad) from it: at 10 Hz a change of turn rate by 120°/s
+  /// within a scan, which no wheelchair makes. In an open space a scan of ~25 poles and legs
+  /// matched 16° off the prediction (goodness 0.56) halfway through a 29°/s turn, and the
+  /// prediction carried the error on; the largest a turn's start gave in the simulated crowds was
+  /// 4°.
   double max_turn_step = 12.0 * M_PI / 180;
   /// A scan with fewer points than this (after thinning) is not matched: the prediction is used.
   /// A few poles or bins hold a match (10 points: two bins and a pole); with 30, scans of an
@@ -56,7 +57,7 @@ struct ScanOdometryOptions {
   /// prediction, goodness 0.5-0.8), and the constant-velocity prediction then carried the turn on
   /// for good (a following wheelchair's estimate turned 90° in a second). 0: off.
   double min_points_share = 0.5;
-  std::size_t recent_scans = 10;
+  std::size_t recent_scans = 10;  ///< scans whose median point count min_points_share uses
   /// A scan with fewer points than this (after thinning) is sparse: every point is queried in
   /// every ICP iteration (else a third, a different third each round), and the reference is the
   /// last local_keyframes keyframes together.
