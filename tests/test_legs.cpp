@@ -335,6 +335,45 @@ TEST_CASE(
   CHECK(back_off == -1);
 }
 
+TEST_CASE("a lone leg beside a leg someone holds does not re-identify a lost person", "[legs]") {
+  // The walker and the re-appearing leg of the test above. A person standing at (0.9, 1.8) from
+  // the start (a pair 0.2 m apart, tentative: they never walk) holds two legs 0.41-0.65 m from
+  // that leg, within pair_distance: the lone leg is most likely that person's other leg, not
+  // the lost walker's, who stays lost. Without the standing person the walker takes it back.
+  auto run = [](bool bystander) {
+    const Eigen::Vector2d sensor{0, -5};
+    LegPeopleTracker tr{LegPeopleParams{}};
+    std::vector<LegDetection> standing;
+    if (bystander) standing = {{{0.8, 1.8}, 0.9, sensor, -1}, {{1.0, 1.8}, 0.9, sensor, -1}};
+    for (int k = 0; k <= 20; ++k) {
+      const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      std::vector<LegDetection> legs = standing;
+      legs.push_back({{x + lp / 2, 0.09}, 0.9, sensor, -1});
+      legs.push_back({{x - lp / 2, -0.09}, 0.9, sensor, -1});
+      tr.step(t, legs, {});
+    }
+    long id = 0;
+    for (const PersonState& s : tr.people())
+      if (s.confirmed) id = s.id;
+    for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, standing, {});
+    bool back = false;
+    for (int k = 0; k < 10; ++k) {
+      Eigen::Vector2d leg = pedtrack::test::walkerLegs(0.1 * k, M_PI / 2, 1.0).second;
+      std::vector<LegDetection> legs = standing;
+      legs.push_back({leg + Eigen::Vector2d(0.3, 1.4), 0.9, sensor, -1});
+      tr.step(3.6 + 0.1 * k, legs, {});
+      for (const PersonState& s : tr.people()) back = back || (s.id == id && s.seen);
+    }
+    return std::make_pair(id, back);
+  };
+  const auto [id, back] = run(true);
+  REQUIRE(id > 0);
+  CHECK_FALSE(back);
+  const auto [id_alone, back_alone] = run(false);
+  REQUIRE(id_alone > 0);
+  CHECK(back_alone);
+}
+
 TEST_CASE("with init_speed 0 a still lone leg re-identifies a lost person at a finite place",
           "[legs]") {
   // A leg standing still has no direction of motion to face: the person keeps their facing
