@@ -88,6 +88,12 @@ TEST_CASE("a leg vector allows two gait branches, a side step, and their mirror 
   // A branch's spread: d's direction, σ_d / ρ, and asin's slope, W σ_d / (ρ L), σ_d = √2 σ_leg.
   const double rho = std::hypot(L, W), sd = std::sqrt(2.0) * sigma_leg;
   CHECK(rs[0].sigma == Approx(std::hypot(sd / rho, W * sd / (rho * L))));
+  // One leg partly hidden (occluded_sigma_leg, 0.07 m): σ_d = √(σ_leg² + 0.07²) instead.
+  const double sd_occluded = std::hypot(sigma_leg, 0.07);
+  CHECK(legHeadingReadings(rotated(theta, L, W), W, sigma_leg, 0.0, 0.07)[0].sigma ==
+        Approx(std::hypot(sd_occluded / rho, W * sd_occluded / (rho * L))));
+  CHECK(legHeadingReadings(rotated(theta, L, W), W, sigma_leg, 0.0, sigma_leg)[0].sigma ==
+        Approx(rs[0].sigma));
   // No reading is sharper than the floor.
   CHECK(legHeadingReadings(rotated(theta, L, W), W, sigma_leg, 0.2)[0].sigma == Approx(0.2));
   // Legs passing each other (L within 2 σ_d): one reading, the perpendicular, and its mirror.

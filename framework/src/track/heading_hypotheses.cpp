@@ -36,13 +36,15 @@ double logSumExp(double a, double b) {
 }  // namespace
 
 std::vector<HeadingReading> legHeadingReadings(const Eigen::Vector2d& d, double w0,
-                                               double sigma_leg, double floor) {
+                                               double sigma_leg, double floor, double sigma_other) {
   std::vector<HeadingReading> out;
   const double rho = d.norm();
   if (!(w0 > 0) || rho < 0.5 * w0) return out;
   const double beta = std::atan2(d.y(), d.x());
-  const double sd = std::sqrt(2.0) * sigma_leg;  // the difference of two leg positions
-  const double s_dir = sd / rho;                 // the direction of d
+  // The difference of two leg positions.
+  const double sd =
+      sigma_other >= 0 ? std::hypot(sigma_leg, sigma_other) : std::sqrt(2.0) * sigma_leg;
+  const double s_dir = sd / rho;  // the direction of d
   auto add = [&](double yaw, double sigma, bool sideways) {
     for (double flip : {0.0, M_PI})  // d, and −d (left and right the other way round)
       out.push_back({wrapAngle(yaw + flip), std::max(sigma, floor), sideways, 0.0, flip != 0});

@@ -157,6 +157,8 @@ void LegPoseEstimator::update(const LegSeen& left, const LegSeen& right,
                               const Eigen::Vector2d& sensor) {
   legs_swapped_ = false;
   turned_round_ = false;
+  occluded_left_ = left.seen && left.occluded;
+  occluded_right_ = right.seen && right.occluded;
   if (!left.seen && !right.seen) return;  // coast on the prediction
   bool inferred = false;
   // A leg hidden this scan after being seen, or seen again after a scan or more hidden: its
@@ -298,9 +300,14 @@ double LegPoseEstimator::updateWithHypotheses(const Eigen::Vector2d& legs_d, boo
   // The leg vector as A − B, the legs by the names the hypotheses know them by.
   const Eigen::Vector2d d_ab = left_is_a ? legs_d : Eigen::Vector2d(-legs_d);
   std::vector<HeadingReading> readings;
-  if (!inferred)
-    readings = legHeadingReadings(d_ab, w0_, p_.heading.sigma_leg, p_.heading.sigma_floor);
-  else if (p_.occlusion)
+  if (!inferred) {
+    // A partly hidden leg's circle is less sure of its place (LegSeen::occluded).
+    const double occ =
+        p_.heading.occluded_sigma_leg > 0 ? p_.heading.occluded_sigma_leg : p_.heading.sigma_leg;
+    readings =
+        legHeadingReadings(d_ab, w0_, occluded_left_ ? occ : p_.heading.sigma_leg,
+                           p_.heading.sigma_floor, occluded_right_ ? occ : p_.heading.sigma_leg);
+  } else if (p_.occlusion)
     readings = hiddenLegHeadingBound(d_ab, p_.heading.hidden_spread, p_.heading.sigma_floor);
   observable = !readings.empty();
   headings_.update(readings, walk_v, walk_v_sigma, dt_, p_.max_turn_rate, names_uncertain);

@@ -83,6 +83,9 @@ std::vector<ParamSpec> legPoseParamSpecs(const LegPoseParams& d) {
       ParamSpec::real("heading_sigma_leg", d.heading.sigma_leg, "m", 1e-4, 1,
                       "hypotheses: one leg circle's position error, from which each reading's "
                       "spread follows"),
+      ParamSpec::real("heading_occluded_sigma_leg", d.heading.occluded_sigma_leg, "m", 0, 1,
+                      "hypotheses: the same for a leg circle partly hidden by something nearer "
+                      "beside it (leg_pose's occluded_width); 0: heading_sigma_leg"),
       ParamSpec::real("heading_sigma_floor", d.heading.sigma_floor * deg, "deg", 0.1, 180,
                       "hypotheses: no reading is taken as sharper than this; also the softness "
                       "of a hidden leg's bound"),
@@ -164,6 +167,7 @@ LegPoseParams readLegPoseParams(const ParamSet& s) {
   p.heading.count = int(s.getInt("heading_hypotheses"));
   p.heading.gate = s.getDouble("heading_gate");
   p.heading.sigma_leg = s.getDouble("heading_sigma_leg");
+  p.heading.occluded_sigma_leg = s.getDouble("heading_occluded_sigma_leg");
   p.heading.sigma_floor = s.getDouble("heading_sigma_floor") * rad;
   p.heading.motion_speed = s.getDouble("heading_motion_speed");
   p.heading.turn_tau = s.getDouble("heading_turn_tau");

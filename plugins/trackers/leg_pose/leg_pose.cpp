@@ -3,9 +3,12 @@
 // legs are picked, left from right, among the scan's legs by nearest neighbour to the legs the
 // gait model predicts. The pose [X, Y, θ] comes from P3's constant-acceleration filter with the
 // motion-intention zoning's orientation; a leg hidden by the other is placed by eq. 6–7.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "pedtrack/plugin.h"
 #include "pedtrack/track/gait_fit_ipopt.h"
@@ -24,7 +27,8 @@ class LegPose : public Tracker {
         from_detections_(ctx.params.getString("legs") == "detections"),
         facing_sensor_(ctx.params.getString("initial_facing") == "sensor"),
         max_range_(ctx.params.getDouble("max_range")),
-        lost_time_(ctx.params.getDouble("lost_time")) {
+        lost_time_(ctx.params.getDouble("lost_time")),
+        occluded_width_(ctx.params.getDouble("occluded_width")) {
     if (ctx.params.getString("gait_solver") == "ipopt") params_.gait_solver = &gait::fitIpopt;
   }
 
@@ -38,8 +42,8 @@ class LegPose : public Tracker {
       est_->predict(f.t);
       const auto [li, ri] = est_->associate(legs);
       LegSeen l, r;
-      if (li >= 0) l = {true, legs[std::size_t(li)]};
-      if (ri >= 0) r = {true, legs[std::size_t(ri)]};
+      if (li >= 0) l = {true, legs[std::size_t(li)], occluded_[std::size_t(li)]};
+      if (ri >= 0) r = {true, legs[std::size_t(ri)], occluded_[std::size_t(ri)]};
       est_->update(l, r, sensor);
       if (l.seen || r.seen) last_seen_ = f.t;
     }
@@ -48,19 +52,47 @@ class LegPose : public Tracker {
 
  private:
   // Leg positions in the fixed frame: the leg segmenter's circles, or a classifier's legs.
-  std::vector<Eigen::Vector2d> candidates(const Frame& f) const {
+  // Leg positions in the fixed frame: the leg segmenter's circles, or a classifier's legs. Each
+  // circle is also marked partly hidden (occluded_) when something nearer lies beside it in the
+  // scan (a jump to a nearer return, jump_prev or jump_next, of more than kOccluderJump) and the
+  // part of it seen is narrower than occluded_width: a circle fitted to such a sliver sits
+  // centimetres off the leg's centre, sideways (P3 scenario 3's side view: 7 cm, a 20° error in
+  // the heading read from the pair).
+  std::vector<Eigen::Vector2d> candidates(const Frame& f) {
     std::vector<Eigen::Vector2d> out;
+    occluded_.clear();
     if (from_detections_) {
       for (const Detection& d : f.detections) out.emplace_back(d.x, d.y);
+      occluded_.assign(out.size(), false);
       return out;
     }
+    const int jump_prev = featureIndex(f, "jump_prev"), jump_next = featureIndex(f, "jump_next"),
+              width = featureIndex(f, "width");
     for (const Cluster& c : f.clusters) {
       double x, y, z;
       f.robot_pose.composePoint(c.cx, c.cy, c.cz, x, y, z);
       out.emplace_back(x, y);
+      auto feature = [&](int k) {
+        return k >= 0 && std::size_t(k) < c.features.size() ? c.features[std::size_t(k)] : NAN;
+      };
+      const bool beside_nearer =
+          feature(jump_prev) < -kOccluderJump || feature(jump_next) < -kOccluderJump;
+      occluded_.push_back(occluded_width_ > 0 && beside_nearer && feature(width) < occluded_width_);
     }
     return out;
   }
+
+  static int featureIndex(const Frame& f, const std::string& name) {
+    if (!f.cluster_feature_names) return -1;
+    const auto& names = *f.cluster_feature_names;
+    const auto it = std::find(names.begin(), names.end(), name);
+    return it == names.end() ? -1 : int(it - names.begin());
+  }
+
+  // m: a neighbouring return this much nearer than the segment's end is something in front of
+  // it (the scan segmenter splits segments at jumps of 0.1 m and more by default).
+  static constexpr double kOccluderJump = 0.05;
+  std::vector<bool> occluded_;  // candidates(): this scan's circles partly hidden
 
   // P3 §2.2: the candidate pair (two legs close enough to be one person's) nearest the robot.
   bool acquire(const Frame& f, const std::vector<Eigen::Vector2d>& legs,
@@ -105,7 +137,7 @@ class LegPose : public Tracker {
 
   LegPoseParams params_;
   bool from_detections_, facing_sensor_;
-  double max_range_, lost_time_;
+  double max_range_, lost_time_, occluded_width_;
   std::optional<LegPoseEstimator> est_;
   TrackIds ids_;
   long id_ = 0;
@@ -128,6 +160,10 @@ PluginDescriptor describe() {
       ParamSpec::real("lost_time", 1.0, "s", 0, 3600,
                       "no leg of the person for this long: the track ends and the nearest pair "
                       "is acquired again (new id)"),
+      ParamSpec::real("occluded_width", 0.07, "m", 0, 1,
+                      "a leg circle seen narrower than this with something nearer beside it in "
+                      "the scan is partly hidden: its heading readings take "
+                      "heading_occluded_sigma_leg as its position error; 0: off"),
   };
   d.params.insert(d.params.end(), own.begin(), own.end());
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {

@@ -79,6 +79,9 @@ struct LegPoseParams {
 struct LegSeen {
   bool seen = false;
   Eigen::Vector2d p = Eigen::Vector2d::Zero();
+  /// Partly hidden by something nearer beside it: its position is less sure (heading readings
+  /// take HeadingHypothesesParams::occluded_sigma_leg).
+  bool occluded = false;
 };
 
 class LegPoseEstimator {
@@ -156,6 +159,7 @@ class LegPoseEstimator {
   /// or comes back (HeadingHypothesesParams::label_swap_hidden).
   double updateWithHypotheses(const Eigen::Vector2d& legs_d, bool inferred, bool left_is_a,
                               bool names_uncertain, bool& observable);
+  bool occluded_left_ = false, occluded_right_ = false;  // this scan's legs (LegSeen::occluded)
   /// left_ and right_ (and their hidden times) exchanged.
   void swapNames();
   /// Whether left_ is the hypotheses' leg A, from where A and B were last seen (both legs seen;
