@@ -44,6 +44,19 @@ std::string runScenario(const std::string& name, const std::string& scenario,
   return dir;
 }
 
+// leg_pose_p3.ini over `runs` seeds from `seed_base` of a shipped P3 scenario (`pedtrack
+// montecarlo`); the host must succeed. Returns montecarlo.json.
+std::string p3MonteCarlo(const std::string& scenario, int runs, int seed_base) {
+  const std::string dir = freshDir(scenario + "_montecarlo");
+  const auto r =
+      runHost({"montecarlo", kConfigs + "leg_pose_p3.ini",
+               kConfigs + "scenarios/" + scenario + ".ini", "--runs", std::to_string(runs),
+               "--seed-base", std::to_string(seed_base), "--out", dir, "-q"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  return readFile(dir + "/montecarlo.json");
+}
+
 }  // namespace
 
 TEST_CASE("people_2d_legs.ini keeps a person who stands still for 60 s on one track",
@@ -105,13 +118,7 @@ TEST_CASE("leg_pose keeps P3 scenario 1's walker facing the robot as they back a
   // round. Measured 10.0° (9.3° before occluded_width); 16.3° with the motion evidence on
   // hidden-leg scans, 19.3° without heading_hidden_turn_tau, 19.5° with neither (README
   // "Leg-height tracking").
-  const std::string dir = freshDir("p3_s1_montecarlo");
-  const auto r = runHost({"montecarlo", kConfigs + "leg_pose_p3.ini",
-                          kConfigs + "scenarios/p3_s1_straight_turn_back.ini", "--runs", "40",
-                          "--seed-base", "100", "--out", dir, "-q"});
-  INFO(r.output);
-  REQUIRE(r.exit_code == 0);
-  const std::string j = readFile(dir + "/montecarlo.json");
+  const std::string j = p3MonteCarlo("p3_s1_straight_turn_back", 40, 100);
   CHECK(jsonNumber(j, "heading_mae_deg") < 12);
   CHECK(jsonNumber(j, "position_mae_m") < 0.05);
 }
@@ -121,13 +128,7 @@ TEST_CASE("leg_pose reads P3 scenario 3's side view with the partly hidden leg l
   // 30 seeds of the turn and walk-off seen from the side, where the far leg shows as a sliver
   // beside the near one: its circle sits centimetres off (occluded_width, occluded_sigma_leg).
   // Measured 5.6°; 6.7° with occluded_width = 0.
-  const std::string dir = freshDir("p3_s3_montecarlo");
-  const auto r =
-      runHost({"montecarlo", kConfigs + "leg_pose_p3.ini",
-               kConfigs + "scenarios/p3_s3_turn_straight.ini", "--runs", "30", "--out", dir, "-q"});
-  INFO(r.output);
-  REQUIRE(r.exit_code == 0);
-  const std::string j = readFile(dir + "/montecarlo.json");
+  const std::string j = p3MonteCarlo("p3_s3_turn_straight", 30, 1);
   CHECK(jsonNumber(j, "heading_mae_deg") < 6.0);
 }
 
@@ -135,13 +136,7 @@ TEST_CASE("leg_pose reads P3 scenario 2's side steps from their slow start", "[l
   // 30 seeds of the side step, 180° turn and side step back. The motion counts from
   // heading_motion_speed (0.15 m/s): a side step starting slowly is not read as a turn. Measured
   // 3.7° (P3's target 5°); 7.6° with heading_motion_speed = 0.3.
-  const std::string dir = freshDir("p3_s2_montecarlo");
-  const auto r =
-      runHost({"montecarlo", kConfigs + "leg_pose_p3.ini",
-               kConfigs + "scenarios/p3_s2_sidestep_turn.ini", "--runs", "30", "--out", dir, "-q"});
-  INFO(r.output);
-  REQUIRE(r.exit_code == 0);
-  const std::string j = readFile(dir + "/montecarlo.json");
+  const std::string j = p3MonteCarlo("p3_s2_sidestep_turn", 30, 1);
   CHECK(jsonNumber(j, "heading_mae_deg") < 5);
 }
 
