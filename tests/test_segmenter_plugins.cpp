@@ -103,6 +103,10 @@ TEST_CASE("irls_ground then voxel_ccl: ground labelled, two people, P2 features"
   REQUIRE(f.clusters.size() == 2);
   REQUIRE(f.cluster_feature_names);
   CHECK(*f.cluster_feature_names == std::vector<std::string>{"h", "w", "d", "v", "lambda", "rho"});
+  CHECK(f.clusterFeatureIndex("h") == 0);
+  CHECK(f.clusterFeatureIndex("rho") == 5);
+  CHECK(f.clusterFeatureIndex("width") == -1);
+  CHECK(Frame().clusterFeatureIndex("h") == -1);  // clusters without features
   for (const Cluster& c : f.clusters) {
     CHECK(c.indices.size() == 33 * 3);  // rows at 0.10 ... 1.70 m, all above the 5 cm band
     CHECK(std::abs(c.cx) == Approx(2.0).margin(1e-5));

@@ -58,6 +58,13 @@ const std::vector<CloudSpan>& Frame::cloudSpans() const {
   return *spans_;
 }
 
+int Frame::clusterFeatureIndex(const std::string& name) const {
+  if (!cluster_feature_names) return -1;
+  const auto& names = *cluster_feature_names;
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1 : int(it - names.begin());
+}
+
 std::vector<PointLabel>& Frame::labels() {
   const std::size_t n = cloud().size();
   if (point_labels.size() != n) point_labels.assign(n, PointLabel::Kept);

@@ -112,6 +112,8 @@ struct Frame {
   /// Names of Cluster::features, set by the segmenter that made the clusters (shared, not copied
   /// per frame); null when the clusters carry no features.
   std::shared_ptr<const std::vector<std::string>> cluster_feature_names;
+  /// Index of the feature called `name` in Cluster::features; -1 when the clusters carry none.
+  int clusterFeatureIndex(const std::string& name) const;
   std::vector<Detection> detections;
   std::vector<Track> tracks;
 

@@ -53,8 +53,7 @@ DetectionShape parseDetectionShape(const std::string& s) {
 
 namespace {
 bool has(const Frame& f, const char* name) {
-  const auto& n = f.cluster_feature_names;
-  return n && std::find(n->begin(), n->end(), name) != n->end();
+  return f.clusterFeatureIndex(name) >= 0;
 }
 }  // namespace
 

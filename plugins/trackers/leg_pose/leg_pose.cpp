@@ -3,11 +3,9 @@
 // legs are picked, left from right, among the scan's legs by nearest neighbour to the legs the
 // gait model predicts. The pose [X, Y, θ] comes from P3's constant-acceleration filter with the
 // motion-intention zoning's orientation; a leg hidden by the other is placed by eq. 6–7.
-#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "pedtrack/plugin.h"
@@ -51,7 +49,6 @@ class LegPose : public Tracker {
   }
 
  private:
-  // Leg positions in the fixed frame: the leg segmenter's circles, or a classifier's legs.
   // Leg positions in the fixed frame: the leg segmenter's circles, or a classifier's legs. Each
   // circle is also marked partly hidden (occluded_) when something nearer lies beside it in the
   // scan (a jump to a nearer return, jump_prev or jump_next, of more than kOccluderJump) and the
@@ -66,8 +63,9 @@ class LegPose : public Tracker {
       occluded_.assign(out.size(), false);
       return out;
     }
-    const int jump_prev = featureIndex(f, "jump_prev"), jump_next = featureIndex(f, "jump_next"),
-              width = featureIndex(f, "width");
+    const int jump_prev = f.clusterFeatureIndex("jump_prev"),
+              jump_next = f.clusterFeatureIndex("jump_next"),
+              width = f.clusterFeatureIndex("width");
     for (const Cluster& c : f.clusters) {
       double x, y, z;
       f.robot_pose.composePoint(c.cx, c.cy, c.cz, x, y, z);
@@ -80,13 +78,6 @@ class LegPose : public Tracker {
       occluded_.push_back(occluded_width_ > 0 && beside_nearer && feature(width) < occluded_width_);
     }
     return out;
-  }
-
-  static int featureIndex(const Frame& f, const std::string& name) {
-    if (!f.cluster_feature_names) return -1;
-    const auto& names = *f.cluster_feature_names;
-    const auto it = std::find(names.begin(), names.end(), name);
-    return it == names.end() ? -1 : int(it - names.begin());
   }
 
   // m: a neighbouring return this much nearer than the segment's end is something in front of
