@@ -5,6 +5,7 @@
 // test_leg_pose_estimator.cpp; legs seen from returns of no circle: test_leg_support.cpp.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "leg_walker.h"
@@ -18,20 +19,38 @@ using pedtrack::test::angleDiff;
 namespace {
 
 // A tracker that saw a walker along +x at 1 m/s from x = -2, legs scissoring, from `sensor` for
-// 2 s (confirmed, `id`; 0 if not), then nothing for 1.5 s (until t = 3.5 s).
+// 2 s (confirmed, `id`; 0 if not), then nothing of them for 1.5 s (until t = 3.5 s). `standing`
+// legs are seen in every scan besides.
 struct HiddenWalker {
   const Eigen::Vector2d sensor{0, -5};
   LegPeopleTracker tr;
+  std::vector<LegDetection> standing;
   long id = 0;
-  explicit HiddenWalker(const LegPeopleParams& p) : tr(p) {
+  explicit HiddenWalker(const LegPeopleParams& p, std::vector<LegDetection> also = {})
+      : tr(p), standing(std::move(also)) {
     for (int k = 0; k <= 20; ++k) {
       const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
-      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, sensor, -1}, {{x - lp / 2, -0.09}, 0.9, sensor, -1}},
-              {});
+      std::vector<LegDetection> legs = standing;
+      legs.push_back({{x + lp / 2, 0.09}, 0.9, sensor, -1});
+      legs.push_back({{x - lp / 2, -0.09}, 0.9, sensor, -1});
+      tr.step(t, legs, {});
     }
     for (const PersonState& s : tr.people())
       if (s.confirmed) id = s.id;
-    for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, {}, {});
+    for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, standing, {});
+  }
+  // The walker's k-th scan back (t = 3.6 + 0.1 k): walking on along +y from (0.3, 1.4), seen by
+  // one leg only, the other hidden behind it. Returns where the tracker has the walker's id if
+  // it saw them this scan.
+  std::optional<Eigen::Vector2d> stepBackByOneLeg(int k) {
+    const Eigen::Vector2d leg =
+        pedtrack::test::walkerLegs(0.1 * k, M_PI / 2, 1.0).second + Eigen::Vector2d(0.3, 1.4);
+    std::vector<LegDetection> legs = standing;
+    legs.push_back({leg, 0.9, sensor, -1});
+    tr.step(3.6 + 0.1 * k, legs, {});
+    for (const PersonState& s : tr.people())
+      if (s.id == id && s.seen) return s.p;
+    return std::nullopt;
   }
 };
 
@@ -314,14 +333,9 @@ TEST_CASE(
     HiddenWalker w(p);
     int first_back = -1;
     Eigen::Vector2d at;
-    for (int k = 0; k < 10; ++k) {
-      const double t = 3.6 + 0.1 * k;
-      Eigen::Vector2d leg = pedtrack::test::walkerLegs(0.1 * k, M_PI / 2, 1.0).second;
-      leg += Eigen::Vector2d(0.3, 1.4);
-      w.tr.step(t, {{leg, 0.9, w.sensor, -1}}, {});
-      for (const PersonState& s : w.tr.people())
-        if (s.id == w.id && s.seen && first_back < 0) first_back = k, at = s.p;
-    }
+    for (int k = 0; k < 10; ++k)
+      if (const auto p_seen = w.stepBackByOneLeg(k); p_seen && first_back < 0)
+        first_back = k, at = *p_seen;
     return std::make_tuple(w.id, first_back, at);
   };
   const auto [before, first_back, at] = run(3);
@@ -342,29 +356,12 @@ TEST_CASE("a lone leg beside a leg someone holds does not re-identify a lost per
   // the lost walker's, who stays lost. Without the standing person the walker takes it back.
   auto run = [](bool bystander) {
     const Eigen::Vector2d sensor{0, -5};
-    LegPeopleTracker tr{LegPeopleParams{}};
     std::vector<LegDetection> standing;
     if (bystander) standing = {{{0.8, 1.8}, 0.9, sensor, -1}, {{1.0, 1.8}, 0.9, sensor, -1}};
-    for (int k = 0; k <= 20; ++k) {
-      const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
-      std::vector<LegDetection> legs = standing;
-      legs.push_back({{x + lp / 2, 0.09}, 0.9, sensor, -1});
-      legs.push_back({{x - lp / 2, -0.09}, 0.9, sensor, -1});
-      tr.step(t, legs, {});
-    }
-    long id = 0;
-    for (const PersonState& s : tr.people())
-      if (s.confirmed) id = s.id;
-    for (int k = 1; k <= 15; ++k) tr.step(2 + 0.1 * k, standing, {});
+    HiddenWalker w(LegPeopleParams{}, standing);
     bool back = false;
-    for (int k = 0; k < 10; ++k) {
-      Eigen::Vector2d leg = pedtrack::test::walkerLegs(0.1 * k, M_PI / 2, 1.0).second;
-      std::vector<LegDetection> legs = standing;
-      legs.push_back({leg + Eigen::Vector2d(0.3, 1.4), 0.9, sensor, -1});
-      tr.step(3.6 + 0.1 * k, legs, {});
-      for (const PersonState& s : tr.people()) back = back || (s.id == id && s.seen);
-    }
-    return std::make_pair(id, back);
+    for (int k = 0; k < 10; ++k) back = w.stepBackByOneLeg(k).has_value() || back;
+    return std::make_pair(w.id, back);
   };
   const auto [id, back] = run(true);
   REQUIRE(id > 0);

@@ -154,7 +154,9 @@ PluginDescriptor describe() {
       ParamSpec::real("occluded_width", 0.07, "m", 0, 1,
                       "a leg circle seen narrower than this with something nearer beside it in "
                       "the scan is partly hidden: its heading readings take "
-                      "heading_occluded_sigma_leg as its position error; 0: off"),
+                      "heading_occluded_sigma_leg as its position error (from the segmenter's "
+                      "jump_prev, jump_next and width features: scan_segments, leg_circles; "
+                      "without them no leg is marked); 0: off"),
   };
   d.params.insert(d.params.end(), own.begin(), own.end());
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
