@@ -310,6 +310,8 @@ double LegPoseEstimator::updateWithHypotheses(const Eigen::Vector2d& legs_d, boo
   } else if (p_.occlusion)
     readings = hiddenLegHeadingBound(d_ab, p_.heading.hidden_spread, p_.heading.sigma_floor);
   observable = !readings.empty();
+  const double predicted = g_.x(2);  // the best's prediction
+  const bool was_backward = headings_.best().backward;
   headings_.update(readings, walk_v, walk_v_sigma, dt_, p_.max_turn_rate, names_uncertain);
   takeBestHeading();
   if (observable) {
@@ -321,7 +323,18 @@ double LegPoseEstimator::updateWithHypotheses(const Eigen::Vector2d& legs_d, boo
     zone_ = zoneOrientation(left_, right_, g_.x(2), w0_, p_.zoning).zone;
     if (headings_.best().swapped == left_is_a) swapNames();
   }
-  return headings_.best().innovation;
+  // The facing check's innovation: the best's own or, when a hypothesis walking the other way
+  // (forward or backward) took the lead, the jump from the previous best's prediction to it, if
+  // larger. Such a lead change is the facing in doubt as much as a large innovation is: in P3
+  // scenario 4's quick turns the lead passed to a backward-walking hypothesis 127° away whose
+  // own innovation was 4°, and the walk counted before the turn then held the estimate facing
+  // backward for seconds (over 170 seeds scenario 4 15.5° -> 14.2°, the others unchanged).
+  // Every lead change counted so turned P3 scenario 1's walker round as they back away (its
+  // gait branches trade the lead up to 100° apart): 7.8° -> 71°.
+  const double own = headings_.best().innovation;
+  const double jump = wrapAngle(g_.x(2) - predicted);
+  if (headings_.best().backward != was_backward && std::abs(jump) > std::abs(own)) return jump;
+  return own;
 }
 
 void LegPoseEstimator::learnStepWidth(double distance) {

@@ -50,9 +50,11 @@ struct LegPoseParams {
   /// good. People walk forward far more than backward, so the distance walked along the
   /// estimated facing minus the distance walked against it is summed, starting at (and capped
   /// at) this; an orientation innovation over 45° shrinks it (by half at 67.5°, to nothing from
-  /// 90°: the reading may have been the mirror image); once it falls below −mirror_margin the
-  /// estimate is turned round. A person who walks backward further than this after a clean
-  /// track is then read as facing the way they walk.
+  /// 90°: the reading may have been the mirror image), and so does, with the heading hypotheses,
+  /// the lead passing to a hypothesis walking the other way (forward or backward), by its jump
+  /// from the prediction; once it falls below −mirror_margin the estimate is turned round. A person
+  /// who walks backward further than this after a clean track is then read as facing the way they
+  /// walk.
   double backward_walk_max = 2.5;
   double mirror_margin = 0.3;     ///< m, see backward_walk_max
   double mirror_min_speed = 0.3;  ///< m/s, slower motion is no evidence of facing
