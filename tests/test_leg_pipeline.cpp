@@ -115,11 +115,12 @@ TEST_CASE("leg_pose keeps P3 scenario 1's walker facing the robot as they back a
           "[legs][pipeline]") {
   // 40 seeds of the walk, turn and back-up: with a leg hidden, neither a turn rate kept from
   // before (heading_hidden_turn_tau) nor the midpoint's inferred motion may swing the estimate
-  // round. Measured 10.0° (9.3° before occluded_width); 16.3° with the motion evidence on
-  // hidden-leg scans, 19.3° without heading_hidden_turn_tau, 19.5° with neither (README
-  // "Leg-height tracking").
+  // round, and the mirror image (a turn the other way, the legs renamed) may not take the lead
+  // as they stop. Measured 8.3°; 10.0° with stop 37's bank of 8, heading_hidden_turn_tau 0.2 s
+  // and heading_backward_per_metre 1, where 16.3° with the motion evidence on hidden-leg scans,
+  // 19.3° without heading_hidden_turn_tau, 19.5° with neither (README "Leg-height tracking").
   const std::string j = p3MonteCarlo("p3_s1_straight_turn_back", 40, 100);
-  CHECK(jsonNumber(j, "heading_mae_deg") < 12);
+  CHECK(jsonNumber(j, "heading_mae_deg") < 9.5);
   CHECK(jsonNumber(j, "position_mae_m") < 0.05);
 }
 
@@ -127,9 +128,12 @@ TEST_CASE("leg_pose reads P3 scenario 3's side view with the partly hidden leg l
           "[legs][pipeline]") {
   // 30 seeds of the turn and walk-off seen from the side, where the far leg shows as a sliver
   // beside the near one: its circle sits centimetres off (occluded_width, occluded_sigma_leg).
-  // Measured 5.6°; 6.7° with occluded_width = 0.
+  // After the turn the walker sets off with a leg hidden, where the turn rate relaxes within
+  // heading_hidden_turn_tau (0.05 s). Measured 5.0°; 5.6° with stop 37's bank of 8,
+  // heading_hidden_turn_tau 0.2 s and heading_backward_per_metre 1, and there 6.7° with
+  // occluded_width = 0.
   const std::string j = p3MonteCarlo("p3_s3_turn_straight", 30, 1);
-  CHECK(jsonNumber(j, "heading_mae_deg") < 6.0);
+  CHECK(jsonNumber(j, "heading_mae_deg") < 5.3);
 }
 
 TEST_CASE("leg_pose reads P3 scenario 2's side steps from their slow start", "[legs][pipeline]") {
@@ -144,10 +148,10 @@ TEST_CASE("leg_pose turns round a walker left facing backward by P3 scenario 4's
           "[legs][pipeline]") {
   // 100 seeds of the random walk. Mid-turn the lead can pass to a hypothesis walking backward
   // far from the prediction; that doubts the facing as a large innovation does, and the walk that
-  // follows turns the estimate round. Measured 13.3°; 15.2° when only the best's own innovation
+  // follows turns the estimate round. Measured 12.6°; 14.4° when only the best's own innovation
   // counted (the estimate then stayed facing backward for seconds).
   const std::string j = p3MonteCarlo("p3_s4_random", 100, 200);
-  CHECK(jsonNumber(j, "heading_mae_deg") < 14.3);
+  CHECK(jsonNumber(j, "heading_mae_deg") < 13.5);
 }
 
 #ifdef PEDTRACK_WITH_ROSBAG

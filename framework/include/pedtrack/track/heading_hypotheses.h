@@ -21,7 +21,12 @@
 namespace pedtrack::track {
 
 struct HeadingHypothesesParams {
-  int count = 8;  ///< hypotheses kept (0: off, P3's single zoning reading)
+  /// Hypotheses kept (0: off, P3's single zoning reading). 32, not 8: with 8 the bank filled
+  /// with near neighbours of the best, and after a quick turn no hypothesis was left near the
+  /// true heading or its mirror image (over 170 seeds of P3's scenarios, with the two keys
+  /// below: 8.3 / 3.7 / 4.9 / 15.5° with 8, 7.2 / 3.7 / 4.9 / 13.9° with 16, 6.7 / 3.7 / 4.9 /
+  /// 13.4° with 32 and 64; the time per scan is the simulator's either way).
+  int count = 32;
   /// σ: a reading farther than this from a hypothesis's predicted heading spawns no child.
   double gate = 4;
   /// m, one leg circle's position error (the readings' geometric spread is derived from it).
@@ -45,12 +50,16 @@ struct HeadingHypothesesParams {
   /// 0.3: side steps start slowly (P3 scenario 2's side step off its turn read as a 38° turn
   /// until it was 0.3 m/s fast; over 170 seeds scenario 2 went 7.6° -> 3.7°, scenario 3 5.2° ->
   /// 5.6°, where the walker sets off and stops).
-  double motion_speed = 0.15;         ///< m/s
-  double motion_sigma = 0.7;          ///< rad, spread of ψ − θ about each expected direction
-  double walk_weight = 0.6;           ///< see motion_speed
-  double sideways_weight = 0.6;       ///< see motion_speed
-  double mode_switch = 0.02;          ///< chance per scan of starting or ending a backward walk
-  double backward_per_metre = 1.0;    ///< nats per metre walked backward
+  double motion_speed = 0.15;    ///< m/s
+  double motion_sigma = 0.7;     ///< rad, spread of ψ − θ about each expected direction
+  double walk_weight = 0.6;      ///< see motion_speed
+  double sideways_weight = 0.6;  ///< see motion_speed
+  double mode_switch = 0.02;     ///< chance per scan of starting or ending a backward walk
+  /// Nats per metre walked backward. 0.3, not 1: a backward walk (P3 scenario 1's 2 m) cost
+  /// its true hypothesis more than the mirror image's renamed legs (label_swap) once that
+  /// image survived in the larger bank, which then took the lead as the walker stopped
+  /// (scenario 1 over 170 seeds 10.0° with 1, 7.2° with 0.5, 6.7° with 0.3 and with 0).
+  double backward_per_metre = 0.3;
   double still_sideways_prior = 0.1;  ///< a side step read while slower than motion_speed
   /// Chance per scan that a turning person stops turning: each hypothesis turning faster than
   /// its rate's standard deviation also has a child with the turn rate and acceleration zeroed. A
@@ -71,8 +80,11 @@ struct HeadingHypothesesParams {
   /// hidden behind the other): such a reading cannot show a turn ending, so a rate kept at
   /// turn_tau carried the heading on past where the turn ended, onto the wrong branch of the
   /// legs' geometry when they came back (P3 scenario 3's walk-off after its turn; over 170
-  /// seeds scenario 1 13.6° -> 10.1°, scenario 3 6.8° -> 5.7°, scenario 4 15.9° -> 16.4°).
-  double hidden_turn_tau = 0.2;
+  /// seeds scenario 1 13.6° -> 10.1°, scenario 3 6.8° -> 5.7°, scenario 4 15.9° -> 16.4° with
+  /// 0.2 s). 0.05 s with the bank of 32 and backward_per_metre 0.3: 6.7 / 3.7 / 4.9 / 13.4°
+  /// against 7.8 / 3.7 / 5.6 / 14.2° (0.2 s, 8 hypotheses, 1 nat/m); 0.1 s: 7.0 / 3.7 / 5.2 /
+  /// 13.0°, 0.02 s: 7.0 / 3.7 / 4.9 / 13.7°.
+  double hidden_turn_tau = 0.05;
   /// rad, a hidden leg bounds the heading to the ray's perpendicular ± this (atan of the
   /// largest sagittal leg spread over the step width: 0.3 / 0.17 m)
   double hidden_spread = 1.05;
