@@ -3,7 +3,8 @@
 // robot does not drift, scans with too few points (or from elsewhere) give the constant-velocity
 // prediction; in an open space with a few poles and walkers (sparse scans) the drive still ends
 // within 5 cm / 0.3°; a scan with far fewer points than the recent ones is not matched, nor is a
-// match turned more than max_turn_step from the prediction accepted. Prints the cost of update().
+// match turned more than max_turn_step from the prediction, or faster than max_speed, accepted.
+// Prints the cost of update().
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
@@ -305,4 +306,28 @@ TEST_CASE("a match turned more than max_turn_step from the prediction is rejecte
   const CPose2D loose = jolt(12);
   CHECK(rejected == 0);
   CHECK(loose.phi() == Approx(6 * kDeg).margin(0.5 * kDeg));
+}
+
+TEST_CASE("a match faster than max_speed since the last accepted pose is rejected",
+          "[scan_odometry]") {
+  // Straight on at 1 m/s, then a scan from 0.55 m further on within 0.1 s (5.5 m/s; 0.45 m from
+  // the prediction, inside max_step): rejected at the default 5 m/s, matched with 6 m/s.
+  const World w = room();
+  long rejected = 0;
+  auto leap = [&](double max_speed) {
+    ScanOdometryOptions o;
+    o.max_speed = max_speed;
+    std::mt19937 rng(17);
+    ScanOdometry odo = drivenStraight(w, o, 5, rng);
+    const long before = odo.rejected();
+    const CPose2D p = odo.update(scan(w, kStart + CPose2D(0.95, 0, 0), rng), 0.5);
+    rejected = odo.rejected() - before;
+    return p;
+  };
+  const CPose2D capped = leap(ScanOdometryOptions().max_speed);
+  CHECK(rejected == 1);
+  CHECK(capped.x() == Approx(0.5).margin(0.02));  // the prediction
+  const CPose2D free = leap(6);
+  CHECK(rejected == 0);
+  CHECK(free.x() == Approx(0.95).margin(0.03));
 }

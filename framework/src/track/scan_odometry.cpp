@@ -109,6 +109,12 @@ struct ScanOdometry::Impl {
     return last_pose + CPose2D(d.x() * s, d.y() * s, d.phi() * s);
   }
 
+  // Whether reaching p at t from the last accepted pose is faster than max_speed.
+  bool tooFast(const CPose2D& p, double t) const {
+    if (!(opt.max_speed > 0) || n_accepted == 0 || !(t > last_t)) return false;
+    return (p - last_pose).norm() > opt.max_speed * (t - last_t);
+  }
+
   void accept(const CPose2D& p, double t) {
     prev_pose = last_pose;
     prev_t = last_t;
@@ -203,7 +209,8 @@ struct ScanOdometry::Impl {
     const auto pdf = icp.Align(local ? &localMap() : &keyframe, &scan, pred - origin, info);
     const CPose2D est = origin + pdf->getMeanVal();
     const bool ok = info.goodness >= kMinGoodness && (est - pred).norm() <= opt.max_step &&
-                    std::abs(mrpt::math::wrapToPi(est.phi() - pred.phi())) <= opt.max_turn_step;
+                    std::abs(mrpt::math::wrapToPi(est.phi() - pred.phi())) <= opt.max_turn_step &&
+                    !tooFast(est, t);
     if (ok) {
       ++matched;
       rejected_run = 0;
