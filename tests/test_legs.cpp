@@ -548,3 +548,39 @@ TEST_CASE("a re-identified person standing with jittering legs keeps the heading
   CHECK(seen == 20);
   CHECK(most_off < 0.2);
 }
+
+TEST_CASE("a person lost while standing coasts at their recent mean velocity", "[legs]") {
+  // A walker confirmed on a 2 s walk along +x stands still for 1.5 s at x = 0, and the last scan
+  // before they are lost shows both legs 0.15 m further on (fits of legs partly hidden by someone
+  // passing in front). The filter reads that jump as a walk; over the last second the centre
+  // moved 0.15 m. Lost for 1 s, the track coasts at the slower (lost_velocity_window) and stays
+  // near where they stood, instead of drifting off towards other people's legs.
+  auto run = [](double window) {
+    LegPeopleParams p;
+    p.lost_velocity_window = window;
+    LegPeopleTracker tr(p);
+    const Eigen::Vector2d sensor(0, -5);
+    auto step = [&](double t, double x, double lp) {
+      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, sensor, -1}, {{x - lp / 2, -0.09}, 0.9, sensor, -1}},
+              {});
+    };
+    for (int k = 0; k <= 20; ++k)
+      step(0.1 * k, -2 + 0.1 * k, 0.25 * std::sin(2 * M_PI * 0.9 * 0.1 * k));
+    for (int k = 1; k <= 15; ++k) step(2 + 0.1 * k, 0, 0);
+    step(3.6, 0.15, 0);
+    long id = 0;
+    for (const PersonState& s : tr.people())
+      if (s.confirmed) id = s.id;
+    for (int k = 1; k <= 10; ++k) tr.step(3.6 + 0.1 * k, {}, {});
+    std::optional<Eigen::Vector2d> at;
+    for (const PersonState& s : tr.people())
+      if (s.id == id) at = s.p;
+    REQUIRE(id > 0);
+    REQUIRE(at);
+    return at->x();
+  };
+  const double recent = run(1.0), filter = run(0);
+  INFO("coasted to x = " << recent << " (recent mean velocity), " << filter << " (filter's)");
+  CHECK(recent < 0.3);
+  CHECK(filter > recent + 0.2);
+}

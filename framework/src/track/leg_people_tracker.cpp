@@ -38,6 +38,9 @@ struct LegPeopleTracker::Person {
   // from the centre's positions when seen over the last report_heading_window (oldest first).
   std::optional<double> motion_yaw;
   std::deque<std::pair<double, Eigen::Vector2d>> centres;
+  // Where the person was seen over the last lost_velocity_window (t, centre); was_seen: last scan.
+  std::deque<std::pair<double, Eigen::Vector2d>> recent;
+  bool was_seen = false;
   // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
   double stride_min = INFINITY, stride_max = -INFINITY;
   double score_sum = 0;
@@ -173,6 +176,25 @@ void LegPeopleTracker::updateMotionHeading(Person& q, double t, const Eigen::Vec
   q.centres.emplace_back(t, c);
 }
 
+void LegPeopleTracker::updateLostVelocity(Person& q, double t, const Eigen::Vector2d& c) const {
+  const bool lost_now = !q.seen && q.was_seen;
+  q.was_seen = q.seen;
+  if (p_.lost_velocity_window <= 0) return;
+  if (q.seen) {
+    if (!q.recent.empty() && t <= q.recent.back().first) q.recent.clear();  // time went back
+    q.recent.emplace_back(t, c);
+    while (q.recent.size() > 1 && t - q.recent[1].first >= p_.lost_velocity_window)
+      q.recent.pop_front();
+    return;
+  }
+  if (!lost_now || !q.confirmed || q.recent.size() < 2) return;
+  // Less than a fifth of a second seen says little about a walk.
+  const double span = q.recent.back().first - q.recent.front().first;
+  if (span < 0.2 * p_.lost_velocity_window) return;
+  const Eigen::Vector2d mean_v = (q.recent.back().second - q.recent.front().second) / span;
+  if (mean_v.norm() < q.est.velocity().norm()) q.est.setVelocity(mean_v);
+}
+
 // A confirmed person's leg that no leg circle shows this scan, seen by the returns that are
 // part of no leg circle: within support_gate of where the gait predicts it (`want`), nearer it
 // than the other leg's prediction, off the static scene. A leg far away or all but hidden behind
@@ -295,6 +317,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     if (P.seen) P.seen_at = c, P.seen_v = P.est.velocity();
     if (P.seen && P.confirmed) P.tracked += dt_person;
     if (P.seen) updateMotionHeading(P, t, c);
+    updateLostVelocity(P, t, c);
     const Eigen::Vector2d v = P.est.velocity();
     // Gait evidence: the legs' separation along the direction of motion swings as they scissor.
     if (!P.confirmed && l.seen && r.seen && v.norm() > kStrideMinSpeed) {
@@ -459,6 +482,7 @@ LegPeopleTracker::Object* LegPeopleTracker::reidentifyByOneLeg(
   q.est = LegPoseEstimator(p_.pose);
   q.est.start(t, best->pos(), hidden, yaw);
   q.centres.clear();  // the way from where they were lost is no walk seen
+  q.recent.clear();
   q.backwards = 0;
   (q.est.left() == best->pos() ? q.left : q.right) = best->id;
   best->person = q.id;
@@ -506,6 +530,7 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
       if (v.norm() < p_.init_speed) yaw = person->est.yaw();
       person->est = LegPoseEstimator(p_.pose);
       person->centres.clear();  // the way from where they were lost is no walk seen
+      person->recent.clear();
     } else {
       // A tentative person's filter follows its legs closely (P3's noise), so that a leg
       // jumping to a neighbouring object shows as a speed no walker has (max_confirm_speed) and a

@@ -426,6 +426,11 @@ void LegPoseEstimator::startHeadings() {
   walk_.P = Eigen::Vector4d(g_.P(0, 0), g_.P(1, 1), g_.P(3, 3), g_.P(4, 4)).asDiagonal();
 }
 
+void LegPoseEstimator::setVelocity(const Eigen::Vector2d& v) {
+  g_.x.segment<2>(3) = v;
+  g_.x.segment<2>(6).setZero();
+}
+
 void LegPoseEstimator::turnAround() {
   g_.x(2) = wrapAngle(g_.x(2) + M_PI);
   g_.x(5) = 0;  // the turn rate belonged to the wrong facing

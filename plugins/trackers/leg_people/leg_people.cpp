@@ -41,6 +41,7 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.confirm_travel = s.getDouble("confirm_travel");
   p.confirm_stride = s.getDouble("confirm_stride");
   p.max_coast = s.getDouble("max_coast");
+  p.lost_velocity_window = s.getDouble("lost_velocity_window");
   p.max_coast_confirmed = s.getDouble("max_coast_confirmed");
   p.reacquire_spread = s.getDouble("reacquire_spread");
   p.reacquire_max = s.getDouble("reacquire_max");
@@ -328,6 +329,11 @@ PluginDescriptor describe() {
                       "... and once its legs scissored: their separation along its motion swung "
                       "over this range (two objects slid together by the robot's motion never "
                       "do); 0: off"),
+      ParamSpec::real(
+          "lost_velocity_window", def.lost_velocity_window, "s", 0, 60,
+          "a confirmed person lost from sight coasts at their centre's mean velocity over the "
+          "last this long they were seen, when slower than their filter's (the last "
+          "leg fits before an occlusion often read a jump); 0: off"),
       ParamSpec::real("max_coast", def.max_coast, "s", 0, 3600,
                       "a tentative person with neither leg seen this long is deleted, and a "
                       "confirmed one at the earliest"),

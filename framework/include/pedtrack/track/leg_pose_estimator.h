@@ -126,6 +126,8 @@ class LegPoseEstimator {
   void retune(const LegPoseParams& p);
   /// Turns the estimate round by π (front and back swapped; left and right with them).
   void turnAround();
+  /// Sets the velocity (fixed frame, m/s) and clears the acceleration; the heading is kept.
+  void setVelocity(const Eigen::Vector2d& v);
   /// The last update() found the legs the other way round and swapped its left and right (a
   /// caller that keeps its own leg identities swaps them too).
   bool legsSwapped() const { return legs_swapped_; }
