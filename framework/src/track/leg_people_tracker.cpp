@@ -188,7 +188,7 @@ void LegPeopleTracker::updateLostVelocity(Person& q, double t, const Eigen::Vect
     return;
   }
   if (!lost_now || !q.confirmed || q.recent.size() < 2) return;
-  // Less than a fifth of a second seen says little about a walk.
+  // Seen for less than a fifth of the window: too short a stretch to tell a walk.
   const double span = q.recent.back().first - q.recent.front().first;
   if (span < 0.2 * p_.lost_velocity_window) return;
   const Eigen::Vector2d mean_v = (q.recent.back().second - q.recent.front().second) / span;
