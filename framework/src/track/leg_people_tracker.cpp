@@ -34,12 +34,12 @@ struct LegPeopleTracker::Person {
   Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   double tracked = 0;  // s seen while confirmed (coastLimit)
-  // Reported heading (report_heading_speed): the direction of motion when last seen moving,
-  // from the centre's positions when seen over the last report_heading_window (oldest first).
+  // Reported heading (report_heading_speed): the direction of motion when last seen moving.
   std::optional<double> motion_yaw;
+  // The centre's positions when seen (t, centre; oldest first) over the longer of
+  // report_heading_window and lost_velocity_window: both read their window's start from it.
   std::deque<std::pair<double, Eigen::Vector2d>> centres;
-  // Where the person was seen over the last lost_velocity_window (t, centre); was_seen: last scan.
-  std::deque<std::pair<double, Eigen::Vector2d>> recent;
+  // Seen last scan (lost_velocity_window acts on the scan a person is lost).
   bool was_seen = false;
   // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
   double stride_min = INFINITY, stride_max = -INFINITY;
@@ -153,45 +153,54 @@ double LegPeopleTracker::coastLimit(const Person& q) const {
   return std::clamp(q.tracked, p_.max_coast, std::max(p_.max_coast, p_.max_coast_confirmed));
 }
 
+namespace {
+
+// Where a window of `window` s ending at t starts in `centres` (oldest first): the newest
+// position at least that old, the oldest one while the record is younger.
+const std::pair<double, Eigen::Vector2d>& windowStart(
+    const std::deque<std::pair<double, Eigen::Vector2d>>& centres, double t, double window) {
+  std::size_t k = 0;
+  while (k + 1 < centres.size() && t - centres[k + 1].first >= window) ++k;
+  return centres[k];
+}
+
+}  // namespace
+
 // The way the centre moved over the last report_heading_window, when fast enough: the newest
-// position at least that old is the reference (older ones are no longer needed), the first one
-// while the person is younger. Either way they must have moved report_heading_speed times the
-// window (0.15 m): scan-to-scan jitter of a new or re-identified pose is not a direction.
-void LegPeopleTracker::updateMotionHeading(Person& q, double t, const Eigen::Vector2d& c) const {
-  if (p_.report_heading_speed <= 0) return;
+// position at least that old is the reference, the first one while the person is younger.
+// Either way they must have moved report_heading_speed times the window (0.15 m): scan-to-scan
+// jitter of a new or re-identified pose is not a direction. Then c joins the record, kept as
+// long as the longer of the two windows needs it.
+void LegPeopleTracker::recordCentre(Person& q, double t, const Eigen::Vector2d& c) const {
   // Time that does not advance adds nothing; time that went back (a bag replayed in a loop, a
   // clock reset) makes every stored position meaningless.
   if (!q.centres.empty() && t <= q.centres.back().first) {
     if (t == q.centres.back().first) return;
     q.centres.clear();
   }
-  while (q.centres.size() > 1 && t - q.centres[1].first >= p_.report_heading_window)
-    q.centres.pop_front();
-  if (!q.centres.empty()) {
-    const Eigen::Vector2d moved = c - q.centres.front().second;
-    const double span = std::max(t - q.centres.front().first, p_.report_heading_window);
+  if (p_.report_heading_speed > 0 && !q.centres.empty()) {
+    const auto& [t0, c0] = windowStart(q.centres, t, p_.report_heading_window);
+    const Eigen::Vector2d moved = c - c0;
+    const double span = std::max(t - t0, p_.report_heading_window);
     if (moved.norm() >= p_.report_heading_speed * span)
       q.motion_yaw = std::atan2(moved.y(), moved.x());
   }
+  const double keep = std::max(p_.report_heading_speed > 0 ? p_.report_heading_window : 0.0,
+                               p_.lost_velocity_window);
   q.centres.emplace_back(t, c);
+  while (q.centres.size() > 1 && t - q.centres[1].first >= keep) q.centres.pop_front();
 }
 
-void LegPeopleTracker::updateLostVelocity(Person& q, double t, const Eigen::Vector2d& c) const {
+void LegPeopleTracker::updateLostVelocity(Person& q) const {
   const bool lost_now = !q.seen && q.was_seen;
   q.was_seen = q.seen;
-  if (p_.lost_velocity_window <= 0) return;
-  if (q.seen) {
-    if (!q.recent.empty() && t <= q.recent.back().first) q.recent.clear();  // time went back
-    q.recent.emplace_back(t, c);
-    while (q.recent.size() > 1 && t - q.recent[1].first >= p_.lost_velocity_window)
-      q.recent.pop_front();
-    return;
-  }
-  if (!lost_now || !q.confirmed || q.recent.size() < 2) return;
+  if (p_.lost_velocity_window <= 0 || !lost_now || !q.confirmed || q.centres.size() < 2) return;
+  const auto& [t1, c1] = q.centres.back();
+  const auto& [t0, c0] = windowStart(q.centres, t1, p_.lost_velocity_window);
   // Seen for less than a fifth of the window: too short a stretch to tell a walk.
-  const double span = q.recent.back().first - q.recent.front().first;
+  const double span = t1 - t0;
   if (span < 0.2 * p_.lost_velocity_window) return;
-  const Eigen::Vector2d mean_v = (q.recent.back().second - q.recent.front().second) / span;
+  const Eigen::Vector2d mean_v = (c1 - c0) / span;
   if (mean_v.norm() < q.est.velocity().norm()) q.est.setVelocity(mean_v);
 }
 
@@ -316,8 +325,8 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
     if (P.seen) P.seen_at = c, P.seen_v = P.est.velocity();
     if (P.seen && P.confirmed) P.tracked += dt_person;
-    if (P.seen) updateMotionHeading(P, t, c);
-    updateLostVelocity(P, t, c);
+    if (P.seen) recordCentre(P, t, c);
+    updateLostVelocity(P);
     const Eigen::Vector2d v = P.est.velocity();
     // Gait evidence: the legs' separation along the direction of motion swings as they scissor.
     if (!P.confirmed && l.seen && r.seen && v.norm() > kStrideMinSpeed) {
@@ -482,7 +491,6 @@ LegPeopleTracker::Object* LegPeopleTracker::reidentifyByOneLeg(
   q.est = LegPoseEstimator(p_.pose);
   q.est.start(t, best->pos(), hidden, yaw);
   q.centres.clear();  // the way from where they were lost is no walk seen
-  q.recent.clear();
   q.backwards = 0;
   (q.est.left() == best->pos() ? q.left : q.right) = best->id;
   best->person = q.id;
@@ -530,7 +538,6 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
       if (v.norm() < p_.init_speed) yaw = person->est.yaw();
       person->est = LegPoseEstimator(p_.pose);
       person->centres.clear();  // the way from where they were lost is no walk seen
-      person->recent.clear();
     } else {
       // A tentative person's filter follows its legs closely (P3's noise), so that a leg
       // jumping to a neighbouring object shows as a speed no walker has (max_confirm_speed) and a

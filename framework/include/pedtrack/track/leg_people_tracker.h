@@ -238,10 +238,11 @@ class LegPeopleTracker {
   bool legLike(const Object& o) const;
   double coastLimit(const Person& q) const;
   bool lostLong(const Person& q, double t) const;
-  void updateMotionHeading(Person& q, double t, const Eigen::Vector2d& c) const;
-  /// Records where q was seen (lost_velocity_window) or, the scan q is lost, coasts them at
-  /// their recent mean velocity when that is slower.
-  void updateLostVelocity(Person& q, double t, const Eigen::Vector2d& c) const;
+  /// q seen at c: the reported heading (report_heading_speed), then c recorded.
+  void recordCentre(Person& q, double t, const Eigen::Vector2d& c) const;
+  /// The scan q is lost: they coast at their recent mean velocity when that is slower
+  /// (lost_velocity_window).
+  void updateLostVelocity(Person& q) const;
   void associate(double t, const std::vector<LegDetection>& legs);
   void updatePeople(double t, const std::vector<LegDetection>& legs,
                     const std::function<bool(double, double)>& is_static,
