@@ -1,0 +1,55 @@
+// Private to the leg_people tracker's sources: the state of a tracked leg-like object and of a
+// person (two leg objects and their pose), shared by leg_people_tracker.cpp and
+// leg_people_reidentify.cpp.
+#pragma once
+
+#include <cmath>
+#include <deque>
+#include <optional>
+#include <utility>
+
+#include "pedtrack/track/kalman.h"
+#include "pedtrack/track/leg_people_tracker.h"
+
+namespace pedtrack::track {
+
+struct LegPeopleTracker::Object {
+  long id = 0;
+  Gaussian g;
+  double last_seen = 0;
+  double score_sum = 0;
+  int detections = 0;
+  long person = -1;
+  int det = -1;  // this scan's detection, -1 none
+  Eigen::Vector2d predicted = Eigen::Vector2d::Zero();
+  double meanScore() const { return detections ? score_sum / detections : 0; }
+  double speed() const { return g.x.segment<2>(2).norm(); }
+  Eigen::Vector2d pos() const { return g.x.head<2>(); }
+};
+
+struct LegPeopleTracker::Person {
+  long id = 0;
+  LegPoseEstimator est;
+  long left = -1, right = -1;  // object ids of the legs, -1 none
+  Eigen::Vector2d origin;
+  // Position and velocity when a leg was last seen.
+  Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
+  double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
+  double tracked = 0;  // s seen while confirmed (coastLimit)
+  // Reported heading (report_heading_speed): the direction of motion when last seen moving.
+  std::optional<double> motion_yaw;
+  // The centre's positions when seen (t, centre; oldest first) over the longer of
+  // report_heading_window and lost_velocity_window: both read their window's start from it.
+  std::deque<std::pair<double, Eigen::Vector2d>> centres;
+  // Seen last scan (lost_velocity_window acts on the scan a person is lost).
+  bool was_seen = false;
+  // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
+  double stride_min = INFINITY, stride_max = -INFINITY;
+  double score_sum = 0;
+  int score_n = 0;
+  bool confirmed = false, seen = false;
+  int cluster = -1;
+  explicit Person(const LegPoseParams& p) : est(p) {}
+};
+
+}  // namespace pedtrack::track
