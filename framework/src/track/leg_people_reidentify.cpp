@@ -65,7 +65,8 @@ LegPeopleTracker::Object* LegPeopleTracker::reidentifyByOneLeg(
   Object* best = nullptr;
   double best_d = INFINITY;
   for (auto& o : objects_) {
-    if (o->person >= 0 || o->det < 0 || o->detections < p_.reidentify_leg_scans || !legLike(*o))
+    if (o->person >= 0 || o->det < 0 || o->shunned || o->detections < p_.reidentify_leg_scans ||
+        !legLike(*o))
       continue;
     if (o->speed() < p_.init_speed || o->speed() > p_.max_confirm_speed) continue;
     if (is_static && is_static(o->pos().x(), o->pos().y())) continue;

@@ -22,6 +22,9 @@ struct LegPeopleTracker::Object {
   long person = -1;
   int det = -1;  // this scan's detection, -1 none
   Eigen::Vector2d predicted = Eigen::Vector2d::Zero();
+  // Held a person up alone, standing on the static scene, for one_leg_stand s (a pole or a
+  // table leg a track was left on): never a person's leg again.
+  bool shunned = false;
   double meanScore() const { return detections ? score_sum / detections : 0; }
   double speed() const { return g.x.segment<2>(2).norm(); }
   Eigen::Vector2d pos() const { return g.x.head<2>(); }
@@ -36,6 +39,10 @@ struct LegPeopleTracker::Person {
   Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   double tracked = 0;  // s seen while confirmed (coastLimit)
+  // one_leg_stand: how long (s) one leg object alone has held the person up within
+  // kOneLegStill of one_leg_at (NaN: not so now).
+  double one_leg_since = NAN;
+  Eigen::Vector2d one_leg_at = Eigen::Vector2d::Zero();
   // Reported heading (report_heading_speed): the direction of motion when last seen moving.
   std::optional<double> motion_yaw;
   // The centre's positions when seen (t, centre; oldest first) over the longer of

@@ -197,6 +197,43 @@ std::optional<LegSeen> LegPeopleTracker::legFromReturns(
   return LegSeen{true, centre};
 }
 
+// m: a leg object that stays within this of where it was holds a person up "standing".
+constexpr double kOneLegStill = 0.1;
+
+// A confirmed person held up by one leg object alone, standing (the object within kOneLegStill
+// of one place), for one_leg_stand seconds, where the static scene is, is a track left on a pole
+// or a table leg by a walker who passed it: the assignment gave the walker's leg object the
+// pole's return, and the track stayed when the walker went on (confirmed people are never
+// deleted on the static scene, and keep the grid from learning more of it). A person standing
+// there is kept out of the grid, so their place is static only if it was before they came;
+// and one standing with both legs seen is never let go. The object is let go and shunned; the
+// person coasts, to be re-identified where they really are or deleted.
+void LegPeopleTracker::checkOneLegStand(Person& P, double t, LegSeen& l, LegSeen& r,
+                                        const std::function<bool(double, double)>& is_static) {
+  if (p_.one_leg_stand <= 0 || !P.confirmed) return;
+  Object* lo = findObject(objects_, P.left);
+  Object* ro = findObject(objects_, P.right);
+  const bool lo_seen = lo && lo->det >= 0, ro_seen = ro && ro->det >= 0;
+  if (l.seen && r.seen) {
+    P.one_leg_since = NAN;
+    return;
+  }
+  if (lo_seen == ro_seen) return;  // neither seen: coasting keeps the clock
+  Object* o = lo_seen ? lo : ro;
+  if (std::isnan(P.one_leg_since) || (o->pos() - P.one_leg_at).norm() > kOneLegStill) {
+    P.one_leg_since = t;
+    P.one_leg_at = o->pos();
+    return;
+  }
+  if (t - P.one_leg_since < p_.one_leg_stand) return;
+  if (!is_static || !is_static(o->pos().x(), o->pos().y())) return;
+  o->shunned = true;
+  o->person = -1;
+  (lo_seen ? P.left : P.right) = -1;
+  (lo_seen ? l : r).seen = false;
+  P.one_leg_since = NAN;
+}
+
 void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& legs,
                                     const std::function<bool(double, double)>& is_static,
                                     const std::vector<LegReturn>& returns) {
@@ -233,7 +270,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       double bd = p_.pose.leg_gate;
       if (P.confirmed) bd += std::min(p_.reacquire_spread * (t - P.last_seen), p_.reacquire_max);
       for (auto& o : objects_) {
-        if (o->person >= 0 || o->det < 0) continue;
+        if (o->person >= 0 || o->det < 0 || o->shunned) continue;
         const double d = (o->pos() - want).norm();
         const bool leg_enough = legLike(*o) || (predicted && o->meanScore() >= p_.moving_leg_score);
         if (d >= bd || !leg_enough) continue;
@@ -263,6 +300,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       if (auto s = legFromReturns(P, t, want_l, want_r, is_static, returns, sensor)) l = *s;
     if (!r.seen)
       if (auto s = legFromReturns(P, t, want_r, want_l, is_static, returns, sensor)) r = *s;
+    checkOneLegStand(P, t, l, r, is_static);
     P.seen = l.seen || r.seen;
     if (P.seen) {
       P.last_seen = t;
@@ -375,7 +413,7 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
   // Free, leg-like objects seen this scan, paired closest first.
   std::vector<Object*> free;
   for (auto& o : objects_)
-    if (o->person < 0 && o->det >= 0 && legLike(*o)) free.push_back(o.get());
+    if (o->person < 0 && o->det >= 0 && !o->shunned && legLike(*o)) free.push_back(o.get());
   std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < free.size(); ++i)
     for (std::size_t j = i + 1; j < free.size(); ++j) {

@@ -58,6 +58,7 @@ LegPeopleParams readParams(const ParamSet& s) {
   p.report_heading_speed = s.getDouble("report_heading_speed");
   p.report_heading_window = s.getDouble("report_heading_window");
   p.support_gate = s.getDouble("support_gate");
+  p.one_leg_stand = s.getDouble("one_leg_stand");
   return p;
 }
 
@@ -402,6 +403,10 @@ PluginDescriptor describe() {
                       "returns of no leg circle (one or two beams: far, or all but hidden; many "
                       "that fit no circle: wide trousers) lie within this of where the gait "
                       "predicts it, off the static scene; 0: off"),
+      ParamSpec::real("one_leg_stand", def.one_leg_stand, "s", 0, 3600,
+                      "a confirmed person held up this long by one leg track alone, standing "
+                      "(within 0.1 m) on the static scene, is a track left on a pole or a table "
+                      "leg: that leg track is let go and never a person's leg again; 0: off"),
       ParamSpec::boolean("resolve_swaps", true,
                          "a turn in place of over 90° between two scans is read as the person's "
                          "legs swapped by the assignment (the nearer perpendicular), not a turn"),
