@@ -126,6 +126,30 @@ void addObject(Scenario& s, const std::string& type, double x, double y, const P
   }
 }
 
+// How close (m) the robot's path comes to the surface, at leg height, of a clutter object of
+// addObject's parameters (its 2D footprint: a tree by its trunk); INFINITY without a path.
+double robotPathDistance(const Trajectory& path, const std::string& type, double x, double y,
+                         double x2, double y2, double radius, double width, double depth,
+                         double thickness) {
+  double best = INFINITY;
+  for (const MotionSample& m : path.samples()) {
+    const Eigen::Vector2d r(m.x, m.y);
+    double d;
+    if (type == "wall") {
+      const Eigen::Vector2d p0(x, y), p1(x2, y2), e = p1 - p0;
+      const double u = std::clamp((r - p0).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      d = (r - (p0 + u * e)).norm() - 0.5 * thickness;
+    } else if (type == "box") {
+      d = (r - Eigen::Vector2d(x, y)).norm() - 0.5 * std::hypot(width, depth);
+    } else {
+      const double def = type == "bin" ? 0.25 : type == "tree" ? 0.15 : 0.05;
+      d = (r - Eigen::Vector2d(x, y)).norm() - (radius > 0 ? radius : def);
+    }
+    best = std::min(best, d);
+  }
+  return best;
+}
+
 // The [crowd]: random people, placed apart from each other and from the objects, moving by the
 // social force model (default) or by independent random-walk scripts.
 void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
@@ -332,11 +356,15 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
       if (!(0 < heights[0] && heights[0] <= heights[1]))
         throw ConfigError(cl.where("heights") + ": need 0 < min <= max");
     }
+    const double clearance = cl.getDouble("robot_clearance");
+    // Objects in the robot's way are drawn again from a stream of their own, so the main
+    // stream (the other objects, the crowd) is the same as without robot_clearance.
+    std::mt19937 redraw(static_cast<unsigned>(s.seed) ^ 0x9e3779b9u);
     for (long i = 0; i < cl.getInt("count"); ++i) {
       const std::string& t =
           types[static_cast<std::size_t>(u01(rng) * types.size()) % types.size()];
-      const double x = a[0] + (a[2] - a[0]) * u01(rng);
-      const double y = a[1] + (a[3] - a[1]) * u01(rng);
+      double x = a[0] + (a[2] - a[0]) * u01(rng);
+      double y = a[1] + (a[3] - a[1]) * u01(rng);
       const double yaw = u01(rng) * M_PI;
       // One draw per statement: the order of arguments' evaluation is unspecified.
       const double radius = t == "pole" ? 0.04 + 0.06 * u01(rng) : 0;
@@ -344,6 +372,13 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
       const double depth = 0.3 + 0.5 * u01(rng);
       const double crown = 1.0 + u01(rng);
       const double height = heights.empty() ? 0 : heights[0] + (heights[1] - heights[0]) * u01(rng);
+      for (int tries = 0; clearance > 0 && tries < 1000; ++tries) {
+        const double gap = robotPathDistance(s.robot.path, t, x, y, x + 2 * std::cos(yaw),
+                                             y + 2 * std::sin(yaw), radius, width, depth, 0.15);
+        if (gap >= clearance) break;
+        x = a[0] + (a[2] - a[0]) * u01(redraw);
+        y = a[1] + (a[3] - a[1]) * u01(redraw);
+      }
       addObject(s, t, x, y, &cl, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw), radius, height, yaw,
                 width, depth, 0.15, crown);
     }

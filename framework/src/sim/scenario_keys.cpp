@@ -146,6 +146,11 @@ const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys(
            P::text("heights", std::string(""),
                    "min max: object heights drawn uniformly from this range (m; empty: each "
                    "type's default height)"),
+           P::real("robot_clearance", 0, "m", 0, 100,
+                   "an object drawn closer than this (its surface at leg height) to the "
+                   "[robot]'s path is drawn again elsewhere, from a stream of its own (the crowd "
+                   "and the other objects stay as without it): a robot does not drive through "
+                   "furniture; 0: off"),
        }},
   };
   return keys;
