@@ -5,6 +5,7 @@
 // test_leg_pose_estimator.cpp; legs seen from returns of no circle: test_leg_support.cpp.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -53,6 +54,22 @@ struct HiddenWalker {
     return std::nullopt;
   }
 };
+
+// `scans` scans from t (advanced) of a walker along +x at 1 m/s from x = -2, legs scissoring,
+// seen from (0, -5), who stops at x = -0.5 (legs at y = ±0.09, after 1.5 m: confirmed) and
+// stands. Returns the id of the confirmed person, 0 if none.
+long walkThenStand(LegPeopleTracker& tr, double& t, int scans,
+                   const std::function<bool(double, double)>& is_static = {}) {
+  for (int k = 0; k < scans; ++k, t += 0.1) {
+    const double x = std::min(-0.5, -2 + 1.0 * t);
+    const double lp = x < -0.5 ? 0.25 * std::sin(2 * M_PI * 0.9 * t) : 0.0;
+    tr.step(t, {{{x + lp / 2, 0.09}, 0.9, {0, -5}, -1}, {{x - lp / 2, -0.09}, 0.9, {0, -5}, -1}},
+            is_static);
+  }
+  for (const PersonState& s : tr.people())
+    if (s.confirmed) return s.id;
+  return 0;
+}
 
 }  // namespace
 
@@ -197,17 +214,8 @@ TEST_CASE("a confirmed person hidden for two seconds is re-acquired by one leg",
   CAPTURE(score);
   LegPeopleParams p;  // max_coast 3 s; gate leg_gate + 0.5 m/s unseen, at most + 0.6 m
   LegPeopleTracker tr(p);
-  long id = 0;
-  double x = -2, t = 0;
-  // Walks 1.5 m (confirmed), stops at x = -0.5.
-  for (int k = 0; k < 40; ++k, t += 0.1) {
-    x = std::min(-0.5, -2 + 1.0 * t);
-    const double lp = x < -0.5 ? 0.25 * std::sin(2 * M_PI * 0.9 * t) : 0.0;
-    tr.step(t, {{{x + lp / 2, 0.09}, 0.9, {0, -5}, -1}, {{x - lp / 2, -0.09}, 0.9, {0, -5}, -1}},
-            {});
-  }
-  for (const PersonState& s : tr.people())
-    if (s.confirmed) id = s.id;
+  double t = 0;
+  const long id = walkThenStand(tr, t, 40);
   REQUIRE(id > 0);
   // Hidden for 2 s by someone passing in front, meanwhile stepping 0.55 m aside, then seen by
   // one leg only (the other behind it): more than leg_gate from where the track was left.
@@ -599,15 +607,7 @@ TEST_CASE("a track left on a static pole by one leg is let go after one_leg_stan
       return pole_static && (Eigen::Vector2d(x, y) - pole).norm() < 0.1;
     };
     double t = 0;
-    for (int k = 0; k < 50; ++k, t += 0.1) {  // walks 1.5 m (confirmed), stands 1 s
-      const double x = std::min(-0.5, -2 + 1.0 * t);
-      const double lp = x < -0.5 ? 0.25 * std::sin(2 * M_PI * 0.9 * t) : 0.0;
-      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, {0, -5}, -1}, {{x - lp / 2, -0.09}, 0.9, {0, -5}, -1}},
-              is_static);
-    }
-    long id = 0;
-    for (const PersonState& s : tr.people())
-      if (s.confirmed) id = s.id;
+    const long id = walkThenStand(tr, t, 50, is_static);  // stands 1 s
     REQUIRE(id > 0);
     bool seen = false;
     for (int k = 0; k < 80; ++k, t += 0.1) {  // 8 s: only the pole's return
