@@ -94,6 +94,12 @@ std::string personScript(const ParamSet& p, unsigned long seed, int id) {
                      int(p.getInt("repeats")));
 }
 
+// The radius of a round object (pole, bin, tree trunk): `radius`, else its type's default.
+double roundRadius(const std::string& type, double radius) {
+  if (radius > 0) return radius;
+  return type == "bin" ? 0.25 : type == "tree" ? 0.15 : 0.05;
+}
+
 void addObject(Scenario& s, const std::string& type, double x, double y, const ParamSet* p,
                double x2, double y2, double radius, double height, double yaw, double width,
                double depth, double thickness, double crown) {
@@ -111,15 +117,15 @@ void addObject(Scenario& s, const std::string& type, double x, double y, const P
                                          0.5 * thickness, 0, h(2.5), owner));
     }
   } else if (type == "pole") {
-    const double r = radius > 0 ? radius : 0.05;
+    const double r = roundRadius(type, radius);
     s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(2.5), owner));
   } else if (type == "bin") {
-    const double r = radius > 0 ? radius : 0.25;
+    const double r = roundRadius(type, radius);
     s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(0.9), owner));
   } else if (type == "box") {
     s.objects.push_back(Primitive::box(x, y, yaw, 0.5 * width, 0.5 * depth, 0, h(0.8), owner));
   } else if (type == "tree") {
-    const double r = radius > 0 ? radius : 0.15, top = h(5.0);
+    const double r = roundRadius(type, radius), top = h(5.0);
     const double cr = std::min(crown, 0.5 * top);
     s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, top - cr, owner));
     if (cr > 0) s.objects.push_back(Primitive::sphere({x, y, top - cr}, cr, owner));
@@ -142,8 +148,7 @@ double robotPathDistance(const Trajectory& path, const std::string& type, double
     } else if (type == "box") {
       d = (r - Eigen::Vector2d(x, y)).norm() - 0.5 * std::hypot(width, depth);
     } else {
-      const double def = type == "bin" ? 0.25 : type == "tree" ? 0.15 : 0.05;
-      d = (r - Eigen::Vector2d(x, y)).norm() - (radius > 0 ? radius : def);
+      d = (r - Eigen::Vector2d(x, y)).norm() - roundRadius(type, radius);
     }
     best = std::min(best, d);
   }
