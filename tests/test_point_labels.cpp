@@ -1,7 +1,9 @@
 // Per-point label files: the container round trip, and the simulator's per-point truth checked
 // against the ray each decoded return came from.
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "pedtrack/errors.h"
 #include "pedtrack/point_labels.h"
@@ -151,6 +153,34 @@ TEST_CASE("label files round-trip frames, planes and clearances", "[labels]") {
   CHECK_FALSE(r.next(f));
   test::writeFile(path, "not a label file");
   CHECK_THROWS_AS(LabelFileReader(path), ConfigError);
+}
+
+TEST_CASE("label files: the same frames give the same bytes, however slowly they are written",
+          "[labels]") {
+  // Flushing by the wall clock made a simulation written twice differ byte for byte (the
+  // same labels, compressed with flushes at other places). 25 frames over 2.4 s of frame time:
+  // two flushes by the frames' clock; one file is written with a wall-clock pause longer than
+  // the old one-second period.
+  const std::string dir = test::freshDir("labels_bytes");
+  auto write = [&](const std::string& path, bool pause) {
+    LabelFileWriter w(path, LabelKind::Run);
+    for (int k = 0; k < 25; ++k) {
+      LabelFrame f;
+      f.index = std::uint64_t(k);
+      f.t = 1.7e9 + 0.1 * k;
+      f.labels.assign(5000, k % 7 - 2);
+      w.write(f);
+      if (pause && k == 12) std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    }
+  };
+  write(dir + "/a.bin", false);
+  write(dir + "/b.bin", true);
+  CHECK(test::readFile(dir + "/a.bin") == test::readFile(dir + "/b.bin"));
+  LabelFileReader r(dir + "/b.bin");
+  LabelFrame f;
+  int n = 0;
+  while (r.next(f)) CHECK(f.index == std::uint64_t(n++));
+  CHECK(n == 25);
 }
 
 TEST_CASE("VLP-16 truth: every decoded return's label is what its ray hit first", "[labels]") {

@@ -2,7 +2,7 @@
 
 #include <zlib.h>
 
-#include <chrono>
+#include <cmath>
 #include <cstring>
 
 #include "pedtrack/errors.h"
@@ -12,9 +12,9 @@ namespace {
 
 constexpr char kMagic[8] = {'P', 'T', 'L', 'A', 'B', 'E', 'L', '1'};
 
-double monotonicSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+// Flushed once the data's own clock moved a second (either way: a clock reset) or this many
+// frames went by (timestamps that never advance).
+constexpr int kFlushFrames = 100;
 
 }  // namespace
 
@@ -43,7 +43,6 @@ LabelFileWriter::LabelFileWriter(const std::string& path, LabelKind kind) : path
   put(kMagic, sizeof kMagic);
   const auto k = static_cast<std::uint32_t>(kind);
   put(&k, sizeof k);
-  last_flush_ = monotonicSeconds();
 }
 
 LabelFileWriter::~LabelFileWriter() {
@@ -74,10 +73,14 @@ void LabelFileWriter::write(const LabelFrame& f) {
     put(&p.id, sizeof p.id);
     put(&p.clearance, sizeof p.clearance);
   }
-  const double now = monotonicSeconds();
-  if (now - last_flush_ > 1.0) {
+  // By the frames' time, not the wall clock: a replay then writes the same bytes however fast
+  // the machine (two runs of one simulation compare equal), and a live run, whose frames come
+  // at the sensor's pace, still reaches the disk about once a second.
+  if (std::isnan(last_flush_t_)) last_flush_t_ = f.t;
+  if (std::abs(f.t - last_flush_t_) >= 1.0 || ++unflushed_ >= kFlushFrames) {
     gzflush(static_cast<gzFile>(gz_), Z_SYNC_FLUSH);
-    last_flush_ = now;
+    last_flush_t_ = f.t;
+    unflushed_ = 0;
   }
 }
 

@@ -13,6 +13,7 @@
 // then uint32 m and m × (int32 person id, float32 clearance m): truth files list every person
 // the scan hit with the distance from its returns to the nearest return of anything else but
 // the ground (capped at kClearanceCap); run files write m = 0.
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -64,8 +65,9 @@ struct LabelFrame {
 /// A run's labels of one processed frame: point_labels, then each cluster's index on its points.
 LabelFrame runLabels(const Frame& frame);
 
-/// Streams a label file; the data reaches the disk at least once a second and on close, so an
-/// interrupted run keeps what it produced.
+/// Streams a label file; the data reaches the disk once a second of the frames' time (and at
+/// least every 100 frames) and on close, so an interrupted run keeps what it produced. The same
+/// frames always give the same bytes.
 class LabelFileWriter {
  public:
   LabelFileWriter(const std::string& path, LabelKind kind);  ///< throws DataError
@@ -78,8 +80,9 @@ class LabelFileWriter {
  private:
   void put(const void* data, unsigned bytes);
   std::string path_;
-  void* gz_ = nullptr;  // gzFile
-  double last_flush_ = 0;
+  void* gz_ = nullptr;         // gzFile
+  double last_flush_t_ = NAN;  // frame time of the last flush
+  int unflushed_ = 0;          // frames written since
 };
 
 class LabelFileReader {
