@@ -1,6 +1,7 @@
 // The multi-person leg tracker (leg_people's LegPeopleTracker) on synthetic legs: walkers kept
 // apart, confirmation (classifier score, travel, scissoring), the static scene, re-identification
-// of lost walkers, coasting, merging and the reported heading. P3's pose parts against known
+// of lost walkers, coasting, merging and the reported heading. One leg object alone holding a
+// person up standing: test_leg_one_leg_stand.cpp. P3's pose parts against known
 // values: test_leg_pose_parts.cpp; the pose estimator on synthetic walks:
 // test_leg_pose_estimator.cpp; legs seen from returns of no circle: test_leg_support.cpp.
 #include <catch2/catch.hpp>
@@ -16,6 +17,7 @@
 using namespace pedtrack::track;
 using Catch::Detail::Approx;
 using pedtrack::test::angleDiff;
+using pedtrack::test::walkThenStand;
 
 namespace {
 
@@ -54,22 +56,6 @@ struct HiddenWalker {
     return std::nullopt;
   }
 };
-
-// `scans` scans from t (advanced) of a walker along +x at 1 m/s from x = -2, legs scissoring,
-// seen from (0, -5), who stops at x = -0.5 (legs at y = ±0.09, after 1.5 m: confirmed) and
-// stands. Returns the id of the confirmed person, 0 if none.
-long walkThenStand(LegPeopleTracker& tr, double& t, int scans,
-                   const std::function<bool(double, double)>& is_static = {}) {
-  for (int k = 0; k < scans; ++k, t += 0.1) {
-    const double x = std::min(-0.5, -2 + 1.0 * t);
-    const double lp = x < -0.5 ? 0.25 * std::sin(2 * M_PI * 0.9 * t) : 0.0;
-    tr.step(t, {{{x + lp / 2, 0.09}, 0.9, {0, -5}, -1}, {{x - lp / 2, -0.09}, 0.9, {0, -5}, -1}},
-            is_static);
-  }
-  for (const PersonState& s : tr.people())
-    if (s.confirmed) return s.id;
-  return 0;
-}
 
 }  // namespace
 
@@ -591,33 +577,4 @@ TEST_CASE("a person lost while standing coasts at their recent mean velocity", "
   INFO("coasted to x = " << recent << " (recent mean velocity), " << filter << " (filter's)");
   CHECK(recent < 0.3);
   CHECK(filter > recent + 0.2);
-}
-
-TEST_CASE("a track left on a static pole by one leg is let go after one_leg_stand", "[legs]") {
-  // A walker stops with their left leg where a pole stands (the static scene knows it), then
-  // goes on unseen (hidden by the pole's neighbours, say): the pole's returns alone would hold
-  // the track there for good. On a place that is not static scene (a person standing side-on,
-  // one leg behind the other) the track stays.
-  auto seen_at_end = [](double one_leg_stand, bool pole_static) {
-    LegPeopleParams p;
-    p.one_leg_stand = one_leg_stand;
-    LegPeopleTracker tr(p);
-    const Eigen::Vector2d pole(-0.5, 0.09);
-    auto is_static = [&](double x, double y) {
-      return pole_static && (Eigen::Vector2d(x, y) - pole).norm() < 0.1;
-    };
-    double t = 0;
-    const long id = walkThenStand(tr, t, 50, is_static);  // stands 1 s
-    REQUIRE(id > 0);
-    bool seen = false;
-    for (int k = 0; k < 80; ++k, t += 0.1) {  // 8 s: only the pole's return
-      tr.step(t, {{pole, 0.3, {0, -5}, -1}}, is_static);
-      seen = false;
-      for (const PersonState& s : tr.people()) seen |= s.id == id && s.seen;
-    }
-    return seen;
-  };
-  CHECK_FALSE(seen_at_end(3, true));
-  CHECK(seen_at_end(0, true));   // off: the pole holds the track
-  CHECK(seen_at_end(3, false));  // not static scene: a person standing side-on
 }

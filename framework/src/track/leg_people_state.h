@@ -3,6 +3,7 @@
 // leg_people_reidentify.cpp.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <optional>
@@ -30,6 +31,30 @@ struct LegPeopleTracker::Object {
   Eigen::Vector2d pos() const { return g.x.head<2>(); }
 };
 
+// One leg object alone holding a person up, standing: since when (NaN: not now), where (the
+// first position, or the mean of all so far), and how far round it the scanner has moved (the
+// range of the change of the bearing from the scanner to it, unwrapped, rad).
+struct OneLegStand {
+  double since = NAN;
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();
+  int n = 0;
+  double bearing = 0, turn_min = 0, turn_max = 0;
+  // The object at p, seen on bearing b at t: restarts the stand when p is farther than `still`
+  // from `at` (the mean of the positions when `average`, else the first); returns whether the
+  // stand went on.
+  bool advance(double t, const Eigen::Vector2d& p, double b, double still, bool average) {
+    if (std::isnan(since) || (p - at).norm() > still) {
+      since = t, at = p, n = 1, bearing = b, turn_min = turn_max = 0;
+      return false;
+    }
+    ++n;
+    if (average) at += (p - at) / n;
+    const double turn = std::remainder(b - bearing, 2 * M_PI);
+    turn_min = std::min(turn_min, turn), turn_max = std::max(turn_max, turn);
+    return true;
+  }
+};
+
 struct LegPeopleTracker::Person {
   long id = 0;
   LegPoseEstimator est;
@@ -39,10 +64,12 @@ struct LegPeopleTracker::Person {
   Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   double tracked = 0;  // s seen while confirmed (coastLimit)
-  // one_leg_stand: how long (s) one leg object alone has held the person up within
-  // kOneLegStill of one_leg_at (NaN: not so now).
-  double one_leg_since = NAN;
-  Eigen::Vector2d one_leg_at = Eigen::Vector2d::Zero();
+  // one_leg_stand: since when (NaN: not now) one leg object alone has held the person up
+  // standing, and where, tested two ways (checkOneLegStand).
+  OneLegStand on_static, in_view;
+  // Where scan returns no longer count as this person's leg (legFromReturns): a leg seen only in
+  // returns stood there while the scanner moved round it (checkOneLegStand).
+  std::optional<Eigen::Vector2d> no_support_at;
   // Reported heading (report_heading_speed): the direction of motion when last seen moving.
   std::optional<double> motion_yaw;
   // The centre's positions when seen (t, centre; oldest first) over the longer of

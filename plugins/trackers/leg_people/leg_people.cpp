@@ -405,8 +405,10 @@ PluginDescriptor describe() {
                       "predicts it, off the static scene; 0: off"),
       ParamSpec::real("one_leg_stand", def.one_leg_stand, "s", 0, 3600,
                       "a confirmed person held up this long by one leg track alone, standing "
-                      "(within 0.1 m) on the static scene, is a track left on a pole or a table "
-                      "leg: that leg track is let go and never a person's leg again; 0: off"),
+                      "(within 0.1 m) on the static scene, or (within 0.25 m) while the scanner "
+                      "moved 45 deg or more round it, is a track left on a pole or a table leg: "
+                      "that leg track is let go and never a person's leg again (one seen only in "
+                      "returns of no circle, support_gate, no longer holds the person up); 0: off"),
       ParamSpec::boolean("resolve_swaps", true,
                          "a turn in place of over 90° between two scans is read as the person's "
                          "legs swapped by the assignment (the nearer perpendicular), not a turn"),

@@ -191,7 +191,10 @@ struct LegPeopleParams {
   /// 0.001 (people standing side-on). Most of those poles stood on the robot's loop, which the
   /// clutter of other seeds ignored; with them moved off it ([clutter] robot_clearance) the
   /// moving crowd's MOTA is the same with and without this, false positives 3,317 -> 3,064.
-  /// On leg_tracker's positive_4 bag 241 -> 215 track rows near no labelled leg. 0: off.
+  /// On leg_tracker's positive_4 bag 241 -> 215 track rows near no labelled leg. The same
+  /// holds, static scene or not, for a leg standing while the scanner moves 45 deg or more round
+  /// it (a person would have shown their second leg), and then for one seen only in returns of
+  /// no circle (support_gate): see checkOneLegStand. 0: off, both.
   double one_leg_stand = 3;
 };
 
@@ -257,7 +260,8 @@ class LegPeopleTracker {
   /// (lost_velocity_window).
   void updateLostVelocity(Person& q) const;
   void associate(double t, const std::vector<LegDetection>& legs);
-  void checkOneLegStand(Person& P, double t, LegSeen& l, LegSeen& r,
+  void checkOneLegStand(Person& P, double t, const std::vector<LegDetection>& legs,
+                        const Eigen::Vector2d& sensor, LegSeen& l, LegSeen& r,
                         const std::function<bool(double, double)>& is_static);
   void updatePeople(double t, const std::vector<LegDetection>& legs,
                     const std::function<bool(double, double)>& is_static,
