@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "pedtrack/track/gaussian.h"
 #include "pedtrack/track/kalman.h"
 #include "pedtrack/track/leg_people_tracker.h"
 
@@ -49,9 +50,13 @@ struct OneLegStand {
     }
     ++n;
     if (average) at += (p - at) / n;
-    const double turn = std::remainder(b - bearing, 2 * M_PI);
+    const double turn = wrapAngle(b - bearing);
     turn_min = std::min(turn_min, turn), turn_max = std::max(turn_max, turn);
     return true;
+  }
+  // Whether the stand has lasted `stand` s while the scanner moved `parallax` rad or more round it.
+  bool seenRound(double t, double stand, double parallax) const {
+    return t - since >= stand && turn_max - turn_min >= parallax;
   }
 };
 

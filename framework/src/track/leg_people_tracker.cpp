@@ -249,8 +249,7 @@ void LegPeopleTracker::checkOneLegStand(Person& P, double t, const std::vector<L
     LegSeen& s = l.seen ? l : r;
     const Eigen::Vector2d ray = s.p - sensor;
     if (P.in_view.advance(t, s.p, std::atan2(ray.y(), ray.x()), kOneLegStillMean, true) &&
-        t - P.in_view.since >= p_.one_leg_stand &&
-        P.in_view.turn_max - P.in_view.turn_min >= kOneLegParallax) {
+        P.in_view.seenRound(t, p_.one_leg_stand, kOneLegParallax)) {
       P.no_support_at = P.in_view.at;
       s.seen = false;
       P.in_view.since = NAN;
@@ -266,8 +265,7 @@ void LegPeopleTracker::checkOneLegStand(Person& P, double t, const std::vector<L
                          t - P.on_static.since >= p_.one_leg_stand && is_static &&
                          is_static(o->pos().x(), o->pos().y());
   const bool in_view = P.in_view.advance(t, o->pos(), bearing, kOneLegStillMean, true) &&
-                       t - P.in_view.since >= p_.one_leg_stand &&
-                       P.in_view.turn_max - P.in_view.turn_min >= kOneLegParallax;
+                       P.in_view.seenRound(t, p_.one_leg_stand, kOneLegParallax);
   if (!on_static && !in_view) return;
   o->shunned = true;
   o->person = -1;
