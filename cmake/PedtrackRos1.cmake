@@ -27,7 +27,7 @@ find_library(PEDTRACK_ROSLZ4 NAMES roslz4 REQUIRED)
 add_library(pedtrack_bag_check STATIC ${PROJECT_SOURCE_DIR}/framework/src/bag_check.cpp
   ${PROJECT_SOURCE_DIR}/framework/src/ros_wire_check.cpp)
 set_target_properties(pedtrack_bag_check PROPERTIES POSITION_INDEPENDENT_CODE ON)
-target_link_libraries(pedtrack_bag_check PUBLIC pedtrack_framework PRIVATE ${PEDTRACK_BZ2}
+target_link_libraries(pedtrack_bag_check PUBLIC pedtrack_core PRIVATE ${PEDTRACK_BZ2}
   ${PEDTRACK_ROSLZ4})
 target_compile_options(pedtrack_bag_check PRIVATE -Wall -Wextra)
 add_library(pedtrack_ros1 INTERFACE)

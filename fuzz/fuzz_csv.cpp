@@ -4,7 +4,7 @@
 #include <string>
 
 #include "fuzz_support.h"
-#include "pedtrack/object_table.h"
+#include "pedtrack/eval/object_table.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = pedtrack::fuzz::inputFile(data, size, ".csv");

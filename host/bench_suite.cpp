@@ -138,6 +138,18 @@ PipelineFigures benchPipeline(const SuiteContext& ctx, const std::string& label,
   return f;
 }
 
+// The part of the report measured by hand (real data, Monte Carlo sets, the commands given
+// there): everything from the marker line on in the existing report, kept as it is.
+static std::string handMeasuredPart(const fs::path& report) {
+  std::ifstream in(report);
+  if (!in) return std::string();
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  const std::size_t at = s.find(kHandMeasuredMarker);
+  return at == std::string::npos ? std::string() : "\n" + s.substr(at);
+}
+
 int benchSuite(const SuiteOptions& options) {
   SuiteContext ctx;
   ctx.options = options;
@@ -172,7 +184,7 @@ int benchSuite(const SuiteOptions& options) {
   std::string md = "# pedtrack benchmarks\n\n";
   md += "Written by `pedtrack bench --suite" + std::string(options.quick ? " --quick" : "") +
         "` (" + mrpt::format("%.0f", minutes) +
-        " min); do not edit by hand, run it again.\n"
+        " min); do not edit this part by hand, run it again.\n"
         "Every timing is one core (one thread, OpenCV on one thread) in a child process of "
         "its own, on frames read and decoded before timing; peak RSS is that process's.\n\n";
   md += "| | |\n|---|---|\n";
@@ -188,6 +200,7 @@ int benchSuite(const SuiteOptions& options) {
         "**Quick run** (`--quick`): tiny sizes to check the suite works; the figures are not "
         "the benchmark.\n\n";
   md += body;
+  md += handMeasuredPart(out);
   std::ofstream file(out);
   file << md;
   if (!file) throw ConfigError("--out '" + out.string() + "': cannot write");

@@ -68,6 +68,12 @@ std::string scalingSection(const SuiteContext& ctx);
 std::string accuracySection(const SuiteContext& ctx);
 std::string soakSection(const SuiteContext& ctx);
 
+/// BENCHMARKS.md from this line on is measured by hand (real data, Monte Carlo sets): the suite
+/// writes its own part above it and keeps this part as it is.
+constexpr const char* kHandMeasuredMarker =
+    "<!-- Measured by the commands given below; pedtrack bench --suite keeps this part as it is. "
+    "-->";
+
 int benchSuite(const SuiteOptions& options);
 
 }  // namespace pedtrack::cli

@@ -67,7 +67,7 @@ int compareCommand(const std::vector<std::string>& args) {
   po::variables_map vm;
   if (!parseOptions("montecarlo",
                     "--compare DIR1 DIR2 ... [--labels A,B,...] --out DIR (no simulation)", opts,
-                    po::positional_options_description(), args, vm))
+                    po::positional_options_description(), args, vm, "montecarlo --compare"))
     return exit_code::kOk;
   auto fail = [](const std::string& m) {
     throw ConfigError("pedtrack montecarlo --compare: " + m +

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.h"
 #include "options.h"
@@ -19,24 +20,22 @@
 #include "pedtrack/sim/simulator.h"
 
 namespace pedtrack::cli {
-namespace {
 
-// Markdown tables, one per section: readable in a terminal and pasted into the README as is.
-void printKeys() {
+// Markdown tables, one per section: readable in a terminal and the body of docs/scenarios.md.
+std::string scenarioKeysMarkdown() {
+  std::ostringstream o;
   for (const auto& [section, specs] : sim::scenarioKeys()) {
-    std::cout << "\n**`[" << section
-              << "]`**\n\n| key | type | unit | default | range | meaning |\n"
-              << "|---|---|---|---|---|---|\n";
+    o << "\n## `[" << section << "]`\n\n| key | type | unit | default | range | meaning |\n"
+      << "|---|---|---|---|---|---|\n";
     for (const auto& p : specs) {
       std::string def = p.default_value ? *p.default_value : "(required)";
       if (def.empty()) def = "\"\"";
-      std::cout << "| `" << p.name << "` | " << toString(p.type) << " | " << p.unit << " | " << def
-                << " | " << p.rangeText() << " | " << p.doc << " |\n";
+      o << "| `" << p.name << "` | " << toString(p.type) << " | " << p.unit << " | " << def << " | "
+        << p.rangeText() << " | " << p.doc << " |\n";
     }
   }
+  return o.str();
 }
-
-}  // namespace
 
 int simCommand(const std::vector<std::string>& args) {
   po::options_description opts("options");
@@ -56,7 +55,7 @@ int simCommand(const std::vector<std::string>& args) {
   po::variables_map vm;
   if (!parseOptions("sim", "SCENARIO.ini --out DIR [options]", opts, pos, args, vm)) return 0;
   if (vm.count("keys")) {
-    printKeys();
+    std::cout << scenarioKeysMarkdown();
     return 0;
   }
   if (scenario.empty()) throw ConfigError("pedtrack sim: missing SCENARIO.ini");

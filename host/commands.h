@@ -2,6 +2,10 @@
 #include <string>
 #include <vector>
 
+namespace pedtrack {
+class PluginRegistry;
+}  // namespace pedtrack
+
 namespace pedtrack::cli {
 
 // Each subcommand takes the arguments after its name and returns the process exit code.
@@ -35,6 +39,15 @@ int benchStages(const StageBenchOptions& options);
 
 /// `pedtrack bench --model`: a classifier model timed on batches of a samples file's vectors.
 int benchModel(const std::string& model, const std::string& samples, long batch, long repeat);
+
+/// `pedtrack docs`: writes the generated documents (docs/plugins.md, cli.md, scenarios.md).
+int docsCommand(const std::vector<std::string>& args);
+/// The text `pedtrack --help` prints.
+const char* usageText();
+/// docs/plugins.md's text: every plugin of `reg`, by category, from its declarations.
+std::string pluginsMarkdown(const PluginRegistry& reg);
+/// Every scenario section's keys as markdown tables (`pedtrack sim --keys`).
+std::string scenarioKeysMarkdown();
 
 /// Installs SIGINT/SIGTERM handlers that ask a running pipeline to stop after the current frame.
 void installStopHandlers();

@@ -99,7 +99,7 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
       "quiet,q", "no progress output");
   po::variables_map vm;
   if (!parseOptions("eval", "--model MODEL.yml (DATASET | --samples CSV | inputs) [options]", o, {},
-                    args, vm))
+                    args, vm, "eval --model"))
     return 0;
   if (models.empty()) throw ConfigError("pedtrack eval: missing --model");
   if (!(threshold >= 0 && threshold <= 1))

@@ -213,7 +213,8 @@ int evalDecisionsCommand(const std::vector<std::string>& args) {
   if (!parseOptions("eval",
                     "--decisions RUN_DIR [--truth-points FILE] [--q-person 0.5] "
                     "[--person-status confirmed] [--json]",
-                    opts, {}, help ? std::vector<std::string>{"--help"} : args, vm))
+                    opts, {}, help ? std::vector<std::string>{"--help"} : args, vm,
+                    "eval --decisions"))
     return exit_code::kOk;
   if (!std::isfinite(o.q_person))
     throw ConfigError("pedtrack eval: --q-person: must be a number (see `pedtrack eval --help`)");

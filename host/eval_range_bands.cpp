@@ -16,21 +16,6 @@ namespace {
 
 using mrpt::format;
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : s) {
-    if (c == sep) {
-      out.push_back(trim(cur));
-      cur.clear();
-    } else if (c != '\r') {
-      cur += c;
-    }
-  }
-  out.push_back(trim(cur));
-  return out;
-}
-
 std::string bandName(const eval::RangeBand& b) {
   return std::isfinite(b.to) ? format("%g - %g", b.from, b.to) : format("%g - inf", b.from);
 }
@@ -59,7 +44,7 @@ std::string referenceLabel(const char* what, const Stats& s) {
 
 std::vector<double> parseRangeEdges(const std::string& text, const std::string& option) {
   std::vector<double> edges;
-  for (const auto& item : split(text, ',')) {
+  for (const auto& item : splitFields(text, ',')) {
     char* end = nullptr;
     const double v = std::strtod(item.c_str(), &end);
     if (item.empty() || *end != '\0' || !std::isfinite(v) || v < 0)
@@ -86,11 +71,11 @@ void ModelProbs::add(const ObjectTable& table) {
   while (std::getline(in, line) && row < table.rows.size()) {
     ++line_no;
     if (trim(line).empty()) continue;
-    const std::vector<std::string> f = split(line, ',');
+    const std::vector<std::string> f = splitFields(line, ',');
     const ObjectRow& r = table.rows[row++];
     if (c >= f.size() || f[c].empty()) continue;
     std::vector<double> p;
-    for (const auto& item : split(f[c], ';')) {
+    for (const auto& item : splitFields(f[c], ';')) {
       char* end = nullptr;
       const double v = std::strtod(item.c_str(), &end);
       if (item.empty() || *end != '\0' || !std::isfinite(v))

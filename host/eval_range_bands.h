@@ -6,8 +6,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "pedtrack/eval/object_table.h"
 #include "pedtrack/eval/pair_errors.h"
-#include "pedtrack/object_table.h"
 
 namespace pedtrack::cli {
 

@@ -9,34 +9,36 @@
 #include "pedtrack/text.h"
 #include "pedtrack/version.h"
 
-namespace {
+namespace pedtrack::cli {
 
-const char* kUsage =
-    "pedtrack — find and track pedestrians in LiDAR data\n"
-    "\n"
-    "usage: pedtrack <command> [options]\n"
-    "\n"
-    "commands:\n"
-    "  run PIPELINE.ini   run a pipeline (--input FILE replays a rawlog or bag through it)\n"
-    "  ros PIPELINE.ini   run a pipeline as a ROS1 node: scans from topics, tracks published\n"
-    "  plugins [NAME]     list plugins, or show every parameter of one\n"
-    "  import INPUT       convert a ROS1 bag or rawlog to a rawlog (--topic selects topics)\n"
-    "  sim SCENARIO.ini   simulate a scene into a rawlog plus truth.csv\n"
-    "  bench              measure replay or simulation throughput (Release build)\n"
-    "  eval               score tracks (MOTA, IDF1, HOTA, NEES), detections or classifiers\n"
-    "  montecarlo P S     run pipeline P on N simulations of scenario S; score them together\n"
-    "  train knn|svm      build a person classifier model from labelled clusters\n"
-    "  render             draw a run's tracks over its rawlog: a PNG or an MP4 video\n"
-    "\n"
-    "`pedtrack <command> --help` shows a command's options. Exit codes: 0 success, 1 failure\n"
-    "while running, 2 bad input (pipeline file, option, missing file).\n";
+const char* usageText() {
+  return "pedtrack — find and track pedestrians in LiDAR data\n"
+         "\n"
+         "usage: pedtrack <command> [options]\n"
+         "\n"
+         "commands:\n"
+         "  run PIPELINE.ini   run a pipeline (--input FILE replays a rawlog or bag through it)\n"
+         "  ros PIPELINE.ini   run a pipeline as a ROS1 node: scans from topics, tracks published\n"
+         "  plugins [NAME]     list plugins, or show every parameter of one\n"
+         "  import INPUT       convert a ROS1 bag or rawlog to a rawlog (--topic selects topics)\n"
+         "  sim SCENARIO.ini   simulate a scene into a rawlog plus truth.csv\n"
+         "  bench              measure replay or simulation throughput (Release build)\n"
+         "  eval               score tracks (MOTA, IDF1, HOTA, NEES), detections or classifiers\n"
+         "  montecarlo P S     run pipeline P on N simulations of scenario S; score them together\n"
+         "  train knn|svm      build a person classifier model from labelled clusters\n"
+         "  render             draw a run's tracks over its rawlog: a PNG or an MP4 video\n"
+         "  docs               write the generated documents: plugins.md, cli.md, scenarios.md\n"
+         "\n"
+         "`pedtrack <command> --help` shows a command's options. Exit codes: 0 success, 1 failure\n"
+         "while running, 2 bad input (pipeline file, option, missing file).\n";
+}
 
-}  // namespace
+}  // namespace pedtrack::cli
 
 int main(int argc, char** argv) {
   using namespace pedtrack;
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
-    std::cout << kUsage;
+    std::cout << cli::usageText();
     return argc < 2 ? exit_code::kBadInput : exit_code::kOk;
   }
   if (!std::strcmp(argv[1], "--version")) {
@@ -56,6 +58,7 @@ int main(int argc, char** argv) {
     if (cmd == "render") return cli::renderCommand(args);
     if (cmd == "train") return cli::trainCommand(args);
     if (cmd == "montecarlo") return cli::monteCarloCommand(args);
+    if (cmd == "docs") return cli::docsCommand(args);
     std::cerr << "error: unknown command '" << cmd << "' (see `pedtrack --help`)\n";
     return exit_code::kBadInput;
   } catch (const ConfigError& e) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -11,6 +12,8 @@
 #include <sstream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/ini_text.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/pipeline.h"
 #include "pedtrack/plugin_registry.h"
 #include "pedtrack/point_labels.h"
@@ -26,45 +29,75 @@ namespace pedtrack::cli {
 namespace fs = std::filesystem;
 using classify::Label;
 using classify::SampleSet;
-using P = ParamSpec;
+namespace {
+
+// A [recording.NAME] section's keys (kind, region and part become DatasetInput's fields).
+struct RecordingKeys {
+  std::string file;
+  DatasetInput::Kind kind = DatasetInput::Kind::Negative;
+  std::string topic, labels_topic;
+  std::string region;        // x0 y0 x1 y1, sensor frame (m); empty: none
+  std::string part = "0 1";  // from to: the share of the frames used
+};
+
+const ParamTable<Dataset>& datasetTable() {
+  using P = Dataset;
+  static const auto t =
+      ParamTable<P>()
+          .text(&P::pipeline, "pipeline",
+                "segmentation pipeline (its segmenter stages run; relative to this file)")
+          .required()
+          .text(&P::features, "features",
+                "the features a model reads, space-separated (empty: all the segmenters give)")
+          .integer(&P::frame_step, "frame_step", "", 1, 100000, "use every Nth frame of each input")
+          .real(&P::min_range, "min_range", "m", 0, 1000, "clusters nearer the sensor are left out")
+          .real(&P::max_range, "max_range", "m", 0, 1000,
+                "clusters farther from the sensor are left out (0: no limit)")
+          .real(&P::match_distance, "match_distance", "m", 0.001, 10,
+                "a label marks the cluster whose centroid is nearest, within this")
+          .real(&P::purity, "purity", "", 0.5, 1,
+                "sim: a cluster is a person when this share of its points is one person's, a "
+                "non-person when at most 1 - this share is anyone's; else mixed (left out)");
+  return t;
+}
+
+const ParamTable<DatasetInput>& simInputTable() {
+  using P = DatasetInput;
+  static const auto t =
+      ParamTable<P>()
+          .text(&P::file, "scenario", "scenario file (relative to this file)")
+          .required()
+          .integer(&P::seed, "seed", "", -1, 4294967295.0, "random seed (-1: the scenario's)");
+  return t;
+}
+
+const ParamTable<RecordingKeys>& recordingTable() {
+  using P = RecordingKeys;
+  using K = DatasetInput::Kind;
+  static const auto t =
+      ParamTable<P>()
+          .text(&P::file, "file", "rawlog or ROS1 bag (relative to this file)")
+          .required()
+          .choice(&P::kind, "kind", {{"negative", K::Negative}, {"positive", K::Positive}},
+                  "negative: a recording without people, every cluster a non-person; positive: "
+                  "clusters at labels or inside region are persons")
+          .text(&P::topic, "topic", "scan topic of a bag (empty: its only scan topic)")
+          .text(&P::labels_topic, "labels_topic",
+                "positive bag: geometry_msgs/PoseArray topic of person (leg) positions")
+          .text(&P::region, "region",
+                "positive: x0 y0 x1 y1 box (sensor frame, m) where only people move")
+          .text(&P::part, "part",
+                "from to: the share of the recording's frames used (0 0.5: first half)");
+  return t;
+}
+
+}  // namespace
 
 const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& datasetKeys() {
   static const std::vector<std::pair<std::string, std::vector<ParamSpec>>> keys = {
-      {"dataset",
-       {
-           P::text("pipeline", std::nullopt,
-                   "segmentation pipeline (its segmenter stages run; relative to this file)"),
-           P::text("features", std::string(""),
-                   "the features a model reads, space-separated (empty: all the segmenters give)"),
-           P::integer("frame_step", 1, "", 1, 100000, "use every Nth frame of each input"),
-           P::real("min_range", 0, "m", 0, 1000, "clusters nearer the sensor are left out"),
-           P::real("max_range", 0, "m", 0, 1000,
-                   "clusters farther from the sensor are left out (0: no limit)"),
-           P::real("match_distance", 0.15, "m", 0.001, 10,
-                   "a label marks the cluster whose centroid is nearest, within this"),
-           P::real("purity", 0.8, "", 0.5, 1,
-                   "sim: a cluster is a person when this share of its points is one person's, a "
-                   "non-person when at most 1 - this share is anyone's; else mixed (left out)"),
-       }},
-      {"sim.NAME",
-       {
-           P::text("scenario", std::nullopt, "scenario file (relative to this file)"),
-           P::integer("seed", -1, "", -1, 4294967295.0, "random seed (-1: the scenario's)"),
-       }},
-      {"recording.NAME",
-       {
-           P::text("file", std::nullopt, "rawlog or ROS1 bag (relative to this file)"),
-           P::choice("kind", "negative", {"negative", "positive"},
-                     "negative: a recording without people, every cluster a non-person; "
-                     "positive: clusters at labels or inside region are persons"),
-           P::text("topic", std::string(""), "scan topic of a bag (empty: its only scan topic)"),
-           P::text("labels_topic", std::string(""),
-                   "positive bag: geometry_msgs/PoseArray topic of person (leg) positions"),
-           P::text("region", std::string(""),
-                   "positive: x0 y0 x1 y1 box (sensor frame, m) where only people move"),
-           P::text("part", std::string("0 1"),
-                   "from to: the share of the recording's frames used (0 0.5: first half)"),
-       }},
+      {"dataset", datasetTable().specs()},
+      {"sim.NAME", simInputTable().specs()},
+      {"recording.NAME", recordingTable().specs()},
   };
   return keys;
 }
@@ -83,7 +116,7 @@ Dataset loadDataset(const std::string& path) {
   if (!in) throw ConfigError(path + ": dataset file not found");
   std::stringstream ss;
   ss << in.rdbuf();
-  const std::string text = preprocessPipelineText(ss.str(), path);
+  const std::string text = preprocessIniText(ss.str(), path);
   mrpt::config::CConfigFileMemory ini(text);
   std::vector<std::string> sections;
   ini.getAllSections(sections);
@@ -109,35 +142,31 @@ Dataset loadDataset(const std::string& path) {
     const ParamSet p = validateSection(it->second, kv, path, sec, "a [" + kind + "] section");
     if (kind == "dataset") {
       have_dataset = true;
-      d.pipeline = anchored(dir, p.getString("pipeline"));
-      d.features = p.getList("features");
-      d.frame_step = p.getInt("frame_step");
-      d.min_range = p.getDouble("min_range");
-      d.max_range = p.getDouble("max_range");
-      d.match_distance = p.getDouble("match_distance");
-      d.purity = p.getDouble("purity");
+      datasetTable().readInto(p, d);  // the keys' members only
+      d.pipeline = anchored(dir, d.pipeline);
     } else if (kind == "sim.NAME") {
-      DatasetInput in;
+      DatasetInput in = simInputTable().read(p);
       in.kind = DatasetInput::Kind::Sim;
       in.name = sec;
-      in.file = anchored(dir, p.getString("scenario"));
-      in.seed = p.getInt("seed");
+      in.file = anchored(dir, in.file);
       d.inputs.push_back(in);
     } else {
+      const RecordingKeys r = recordingTable().read(p);
       DatasetInput in;
-      in.kind = p.getString("kind") == "positive" ? DatasetInput::Kind::Positive
-                                                  : DatasetInput::Kind::Negative;
+      in.kind = r.kind;
       in.name = sec;
-      in.file = anchored(dir, p.getString("file"));
-      in.topic = p.getString("topic");
-      in.labels_topic = p.getString("labels_topic");
-      if (!p.getString("region").empty()) in.region = p.getNumbers("region", 4);
-      const auto part = p.getNumbers("part", 2);
+      in.file = anchored(dir, r.file);
+      in.topic = r.topic;
+      in.labels_topic = r.labels_topic;
+      if (!r.region.empty())
+        in.region = parseNumbers(r.region, 4, recordingTable().where(p, &RecordingKeys::region));
+      const std::string part_where = recordingTable().where(p, &RecordingKeys::part);
+      const auto part = parseNumbers(r.part, 2, part_where);
       in.part_from = part[0], in.part_to = part[1];
       if (!(0 <= in.part_from && in.part_from < in.part_to && in.part_to <= 1))
-        throw ConfigError(p.where("part") + ": need 0 <= from < to <= 1");
+        throw ConfigError(part_where + ": need 0 <= from < to <= 1");
       if (in.kind == DatasetInput::Kind::Positive && in.labels_topic.empty() && in.region.empty())
-        throw ConfigError(p.where("kind") +
+        throw ConfigError(recordingTable().where(p, &RecordingKeys::kind) +
                           ": a positive recording needs labels_topic or region (which clusters "
                           "are people)");
       d.inputs.push_back(in);
@@ -147,6 +176,16 @@ Dataset loadDataset(const std::string& path) {
   if (d.inputs.empty())
     throw ConfigError(path + ": no [sim.NAME] or [recording.NAME] section: nothing to learn from");
   return d;
+}
+
+// A recording's path as the model file records it: under $PEDTRACK_DATA it is written
+// ${PEDTRACK_DATA}/..., so a model says where its data came from on any machine.
+static std::string portable(const std::string& path) {
+  const char* data = std::getenv("PEDTRACK_DATA");
+  if (!data || !*data) return path;
+  const std::string root = fs::absolute(data).lexically_normal().string();
+  const std::string file = fs::absolute(path).lexically_normal().string();
+  return file.rfind(root + "/", 0) == 0 ? "${PEDTRACK_DATA}" + file.substr(root.size()) : path;
 }
 
 std::string Dataset::describe() const {
@@ -159,7 +198,7 @@ std::string Dataset::describe() const {
       o << "sim " << in.file << (in.seed >= 0 ? " seed " + std::to_string(in.seed) : "");
       continue;
     }
-    o << (in.kind == DatasetInput::Kind::Positive ? "positive " : "negative ") << in.file;
+    o << (in.kind == DatasetInput::Kind::Positive ? "positive " : "negative ") << portable(in.file);
     if (!in.topic.empty()) o << " " << in.topic;
     if (!in.labels_topic.empty()) o << " labels " << in.labels_topic;
     if (!in.region.empty())
@@ -181,7 +220,7 @@ PipelineOverrides segmentationOnly(PipelineOverrides ov, const std::string& file
   if (!in) throw ConfigError(file + ": pipeline file not found");
   std::stringstream ss;
   ss << in.rdbuf();
-  mrpt::config::CConfigFileMemory ini(preprocessPipelineText(ss.str(), file));
+  mrpt::config::CConfigFileMemory ini(preprocessIniText(ss.str(), file));
   std::string keep;
   for (const auto& st : splitList(ini.read_string("pipeline", "stages", ""))) {
     const std::string plugin = trim(ini.read_string(st, "plugin", ""));

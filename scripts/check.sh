@@ -2,13 +2,16 @@
 # The project's test command (README "Quick start"; .ci/run runs exactly this):
 #   1. builds everything with clang under AddressSanitizer + UndefinedBehaviorSanitizer (and
 #      libFuzzer's coverage) in build-check/, and runs the whole test suite there;
-#   2. runs every libFuzzer target for a bounded time (scripts/fuzz.sh);
+#   2. builds Release in build/ and runs there what the sanitized suite shortens or skips (CTest
+#      label `full_length`: the timing suite `bench --suite --quick`, the fault matrix, every
+#      scenario simulated whole, the classifier and segmentation pipelines at full length);
+#   3. runs every libFuzzer target for a bounded time (scripts/fuzz.sh);
 # and prints how long each step took. Any sanitizer report, failed test or fuzzer crash fails it.
-# A quicker check of a Release build: `ctest --test-dir build -j2`.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 build=${PEDTRACK_CHECK_BUILD:-build-check}
+release=${PEDTRACK_RELEASE_BUILD:-build}
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:detect_odr_violation=0}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/scripts/lsan.supp:print_suppressions=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
@@ -30,6 +33,10 @@ step "test suite under ASan + UBSan" ctest --test-dir "$build" -j2 --output-on-f
 # steal lost whole VLP-16 revolutions). A test that fails three times still fails the run.
 step "live-device tests under ASan + UBSan" ctest --test-dir "$build" --output-on-failure -L live \
   --repeat until-pass:3
+step "build (Release)" bash -c \
+  "cmake -S . -B '$release' -DCMAKE_BUILD_TYPE=Release > /dev/null && cmake --build '$release' -j2"
+step "full-length tests (Release)" ctest --test-dir "$release" -j2 --output-on-failure \
+  -L full_length
 export PEDTRACK_FUZZ_SECONDS=${PEDTRACK_FUZZ_SECONDS:-20}
 step "fuzzing ($PEDTRACK_FUZZ_SECONDS s per target)" scripts/fuzz.sh "$build"
 echo "== times"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Rebuilds every model under models/ that the shipped configs use, from the dataset files in
 # configs/training/. Deterministic (fixed seeds). The leg models need leg_tracker's bags:
-# PEDTRACK_DATA (default ../shared/data). Usage: scripts/train-models.sh [build-dir]
+# PEDTRACK_DATA (the folder holding leg_tracker/; by default the data folder next to the
+# checkout). Usage: scripts/train-models.sh [build-dir]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin="${1:-build}/bin/pedtrack"

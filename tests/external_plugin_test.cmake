@@ -41,3 +41,11 @@ if(NOT rc EQUAL 2 OR NOT err MATCHES "API version 0, but this pedtrack has API v
   message(FATAL_ERROR "a plugin of another API version was not refused properly (${rc}):\n${err}")
 endif()
 message(STATUS "external plugin: ${err}")
+
+# The plugin contract is pedtrack_core alone: the example links no other pedtrack library.
+execute_process(COMMAND readelf -d ${WORK_DIR}/build/pedtrack_range_gate.so
+  RESULT_VARIABLE rc OUTPUT_VARIABLE dyn ERROR_VARIABLE err)
+string(REGEX MATCHALL "libpedtrack_[a-z_]+" needed "${dyn}")
+if(NOT rc EQUAL 0 OR NOT needed STREQUAL "libpedtrack_core")
+  message(FATAL_ERROR "the external plugin links ${needed}, not libpedtrack_core alone:\n${dyn}${err}")
+endif()

@@ -8,7 +8,7 @@
 #include <functional>
 #include <utility>
 
-#include "pedtrack/track/leg_people_tracker.h"
+#include "leg_people/leg_people_tracker.h"
 
 namespace pedtrack::test {
 

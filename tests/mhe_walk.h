@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "pedtrack/track/mhe_ellipse.h"
+#include "mhe_mlesac/mhe_ellipse.h"
 
 namespace pedtrack::test {
 

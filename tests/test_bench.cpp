@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "bench_suite.h"
 #include "test_support.h"
 
 using namespace pedtrack::test;
@@ -56,6 +57,7 @@ TEST_CASE("bench option errors are one line with exit 2", "[bench]") {
   for (const auto& args : std::vector<std::vector<std::string>>{
            {"bench", "--suite", "--soak-seconds", "0"},
            {"bench", "--suite", "--jobs", "0"},
+           {"bench", "--suite", "--jobs=-1"},  // Boost would make it 2^64 threads
            {"bench", "--suite", "--source", "/nonexistent"},
            {"bench", "--pipeline", kConfigs + "people_3d_vlp16.ini", "--points", "-5"}}) {
     const auto r = runHost(args);
@@ -72,6 +74,10 @@ TEST_CASE("bench --suite --quick writes every section of the report with its plo
 #endif
   const std::string dir = freshDir("bench_suite");
   const std::string report = dir + "/BENCHMARKS.md";
+  // An earlier report: its generated part is replaced, its part measured by hand kept.
+  const std::string hand = std::string(pedtrack::cli::kHandMeasuredMarker) +
+                           "\n\n## Figures measured by hand\n\nkept as it is\n";
+  writeFile(report, "# old generated part\n\n" + hand);
   const auto r = runHost({"bench", "--suite", "--quick", "--report", report, "--work",
                           dir + "/work", "--source", PEDTRACK_SOURCE_DIR});
   INFO(r.output);
@@ -88,6 +94,9 @@ TEST_CASE("bench --suite --quick writes every section of the report with its plo
                         "`imm_pdaf`", "`imm_pdaf, P4 preset`", "`leg_people`", "`leg_pose`"})
     CHECK_THAT(md, Catch::Contains("| " + std::string(t) + " | "));
   CHECK_THAT(md, !Catch::Contains("error:"));
+  CHECK_THAT(md, !Catch::Contains("# old generated part"));
+  CHECK(md.size() >= hand.size());
+  CHECK(md.compare(md.size() - hand.size(), hand.size(), hand) == 0);
   // leg_pose runs only where there is one person.
   CHECK_THAT(md, !Catch::Contains("| `legs_crowd_10` | `leg_pose` |"));
   CHECK_THAT(md, Catch::Contains("| `p3_s4_random` | `leg_pose` |"));

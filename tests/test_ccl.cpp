@@ -7,7 +7,7 @@
 #include <set>
 
 #include "pedtrack/seg/cluster_features.h"
-#include "pedtrack/seg/voxel_ccl.h"
+#include "voxel_ccl/voxel_labelling.h"
 
 using namespace pedtrack;
 using seg::Connectivity;

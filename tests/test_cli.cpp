@@ -30,20 +30,29 @@ TEST_CASE("plugins lists every plugin with category and doc, and one plugin's pa
   CHECK_THAT(bad.output, Catch::Contains("did you mean 'rawlog'?"));
 }
 
-TEST_CASE("docs/plugins.md is what `pedtrack plugins --markdown` writes now", "[cli][docs]") {
+TEST_CASE("docs/plugins.md, cli.md and scenarios.md are what `pedtrack docs` writes now",
+          "[cli][docs]") {
 #ifndef PEDTRACK_WITH_ROSBAG
   std::printf("SKIPPED: this build has no rosbag plugin; docs/plugins.md lists it\n");
   std::exit(77);
 #endif
   const std::string dir = freshDir("cli_docs");
   // Only this build's plugins: no extra directories from the environment.
-  const auto r = runShell("env -u PEDTRACK_PLUGIN_PATH '" + std::string(PEDTRACK_BIN) +
-                          "' plugins --markdown '" + dir + "/plugins.md'");
+  const auto r =
+      runShell("env -u PEDTRACK_PLUGIN_PATH '" + std::string(PEDTRACK_BIN) + "' docs --out '" +
+               dir + "' --configs '" + PEDTRACK_SOURCE_DIR + "/configs'");
+  INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const std::string fresh = readFile(dir + "/plugins.md");
-  CHECK_THAT(fresh, Catch::Contains("## voxel_ccl") && Catch::Contains("| `voxel` | double | m |"));
-  INFO("docs/plugins.md is stale: run  build/bin/pedtrack plugins --markdown docs/plugins.md");
-  CHECK(readFile(std::string(PEDTRACK_SOURCE_DIR) + "/docs/plugins.md") == fresh);
+  CHECK_THAT(readFile(dir + "/plugins.md"),
+             Catch::Contains("## voxel_ccl") && Catch::Contains("| `voxel` | double | m |"));
+  CHECK_THAT(readFile(dir + "/cli.md"),
+             Catch::Contains("## pedtrack run") && Catch::Contains("--live-queue"));
+  CHECK_THAT(readFile(dir + "/scenarios.md"),
+             Catch::Contains("## `[person.NAME]`") && Catch::Contains("`crowd.ini`"));
+  for (const char* doc : {"plugins.md", "cli.md", "scenarios.md"}) {
+    INFO("docs/" << doc << " is stale: run  build/bin/pedtrack docs");
+    CHECK(readFile(std::string(PEDTRACK_SOURCE_DIR) + "/docs/" + doc) == readFile(dir + "/" + doc));
+  }
 }
 
 TEST_CASE("bad pipelines exit 2 with one line and write nothing", "[cli]") {

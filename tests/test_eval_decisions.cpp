@@ -8,7 +8,7 @@
 
 #include "pedtrack/errors.h"
 #include "pedtrack/eval/decisions.h"
-#include "pedtrack/object_table.h"
+#include "pedtrack/eval/object_table.h"
 #include "test_support.h"
 
 using namespace pedtrack;

@@ -7,9 +7,9 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "irls_ground/plane.h"
 #include "pedtrack/fit/circle.h"
 #include "pedtrack/fit/ellipse.h"
-#include "pedtrack/fit/plane.h"
 #include "test_support.h"
 
 using namespace pedtrack;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "pedtrack/seg/irls_ground.h"
+#include "irls_ground/irls_ground_fit.h"
 
 using namespace pedtrack;
 using seg::IrlsParams;
@@ -32,7 +32,8 @@ Cloud scene(double tilt, double dir, double h, double a0, double a1, std::mt1993
     for (int i = 0; i < 1800; ++i) {
       const double a = -M_PI + 2 * M_PI * i / 1800;
       if (a >= a0 && a <= a1) continue;
-      c.add(r * std::cos(a), r * std::sin(a), ground(r * std::cos(a), r * std::sin(a)) + noise(rng));
+      c.add(r * std::cos(a), r * std::sin(a),
+            ground(r * std::cos(a), r * std::sin(a)) + noise(rng));
     }
   for (double bx : {2.0, -3.0})  // two 0.5 m boxes, 1 m tall: walls of points
     for (int i = 0; i < 20; ++i)
@@ -71,7 +72,8 @@ TEST_CASE("one IRLS iteration, by hand", "[ground]") {
   // Four points on z = 0 at (±1, ±1) and one 1 m above the origin; prior z = 0. Weights 0.8527662
   // (×4) and 0.0200015; by symmetry the normal stays vertical and the plane passes through the
   // weighted mean height 0.0200015 / (4·0.8527662 + 0.0200015) = 0.0058295.
-  const std::vector<Eigen::Vector3d> pts = {{1, 1, 0}, {1, -1, 0}, {-1, 1, 0}, {-1, -1, 0}, {0, 0, 1}};
+  const std::vector<Eigen::Vector3d> pts = {
+      {1, 1, 0}, {1, -1, 0}, {-1, 1, 0}, {-1, -1, 0}, {0, 0, 1}};
   std::vector<double> w;
   const GroundPlane g = seg::irlsIteration(pts, seg::levelPlane(0), IrlsParams(), &w);
   REQUIRE(g.valid);
@@ -150,7 +152,7 @@ TEST_CASE("IRLS fits the lowest point of each cell, and skips removed points", "
   c.add(1.01, 1.01, 0.5);  // one cell: the lowest of three is kept
   c.add(1.02, 1.03, 0.0);
   c.add(1.05, 1.08, 0.3);
-  c.add(9.0, 0.0, 0.0);    // beyond max_range (5 m): not fitted
+  c.add(9.0, 0.0, 0.0);  // beyond max_range (5 m): not fitted
   c.add(2.01, 2.01, -0.2);
   std::vector<PointLabel> labels(c.x.size(), PointLabel::Kept);
   labels[4] = PointLabel::Removed;

@@ -7,8 +7,8 @@
 #include <functional>
 #include <vector>
 
+#include "leg_people/leg_people_tracker.h"
 #include "leg_walker.h"
-#include "pedtrack/track/leg_people_tracker.h"
 
 using namespace pedtrack::track;
 using pedtrack::test::walkThenStand;

@@ -67,7 +67,8 @@ TEST_CASE("people_2d_legs.ini keeps a person who stands still for 60 s on one tr
   CHECK(jsonNumber(stander, "mota") >= 0.9);
   CHECK(jsonNumber(stander, "id_switches") == 0);
   CHECK(jsonNumber(evalRunJson(dir), "false_positives") <= 10);
-  // The simulator gives odometry (a standing scanner's), so scan_odometry = auto stays off.
+  // The simulator gives odometry (a standing scanner's), so the scan_odometry stage (mode auto)
+  // stays off.
   CHECK(readFile(dir + "/run.json").find("scan_matches") == std::string::npos);
 }
 
@@ -196,7 +197,7 @@ TEST_CASE("negative_2_merged.ini confirms few people where there are none", "[le
 TEST_CASE("without odometry a robot driving through a crowd is tracked from its scan matching",
           "[legs][pipeline]") {
   // legs_crowd_10_moving: 10 walkers, 10 poles and bins, no walls, the robot driving a loop.
-  // odometry = false: the frames carry no robot motion, so scan_odometry (auto) matches the
+  // odometry = false: the frames carry no robot motion, so scan_odometry (mode auto) matches the
   // sparse scans; the tracks are scored in the sensor frame. Seed 31, where with one keyframe
   // per match the estimate turned 100° away (sensor-frame MOTA 0.46; measured now 0.79; with the
   // simulator's noisy odometry 0.84).
@@ -204,10 +205,10 @@ TEST_CASE("without odometry a robot driving through a crowd is tracked from its 
                                       {"source.odometry=false", "source.seed=31"});
   CHECK(readFile(dir + "/run.json").find("scan_matches") != std::string::npos);
   CHECK(jsonNumber(evalRunJson(dir, {"--frame", "sensor"}), "mota") >= 0.75);
-  // scan_odometry = on with odometry too: the match replaces the odometry (composing the two
+  // scan_odometry mode = on with odometry too: the match replaces the odometry (composing the two
   // counted every motion twice: sensor-frame MOTA 0.59 on the scenario's own seed; now 0.81).
   const std::string both =
-      runScenario("legs_scan_odometry_on", "legs_crowd_10_moving.ini", {"track.scan_odometry=on"});
+      runScenario("legs_scan_odometry_on", "legs_crowd_10_moving.ini", {"odometry.mode=on"});
   CHECK(jsonNumber(evalRunJson(both, {"--frame", "sensor"}), "mota") >= 0.7);
 }
 

@@ -8,8 +8,8 @@
 #include <tuple>
 #include <vector>
 
+#include "leg_people/leg_people_tracker.h"
 #include "leg_walker.h"
-#include "pedtrack/track/leg_people_tracker.h"
 #include "pedtrack/track/leg_pose_estimator.h"
 #include "pedtrack/track/leg_zoning.h"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "leg_walker.h"
-#include "pedtrack/track/gait_fit_ipopt.h"
+#include "pedtrack/ipopt/gait_fit.h"
 #include "pedtrack/track/gait_model.h"
 #include "pedtrack/track/leg_pose_estimator.h"
 #include "pedtrack/track/leg_zoning.h"

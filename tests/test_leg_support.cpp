@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "pedtrack/track/leg_people_tracker.h"
+#include "leg_people/leg_people_tracker.h"
 
 using namespace pedtrack::track;
 

@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
+#include "leg_people/leg_people_tracker.h"
 #include "leg_walker.h"
-#include "pedtrack/track/leg_people_tracker.h"
 #include "pedtrack/track/leg_pose_estimator.h"
 
 using namespace pedtrack::track;

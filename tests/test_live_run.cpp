@@ -3,10 +3,12 @@
 // keeping what a source produced so that it replays bit for bit.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <filesystem>
 #include <thread>
 
 #include "pedtrack/frame_queue.h"
 #include "pedtrack/frame_supply.h"
+#include "pedtrack/stop_request.h"
 #include "test_support.h"
 
 using namespace pedtrack;
@@ -92,10 +94,10 @@ TEST_CASE("a stop request ends a live run between frames", "[live]") {
   Frame f;
   FrameSupply::Clock::time_point arrival;
   REQUIRE(supply.next(f, arrival));
-  Pipeline::stopRequested() = true;
+  stopRequested() = true;
   CHECK_FALSE(supply.next(f, arrival));
   supply.stop();  // joins: the reading thread saw the request
-  Pipeline::stopRequested() = false;
+  stopRequested() = false;
   CHECK(supply.framesRead() < 1000000);
 }
 
@@ -116,9 +118,24 @@ TEST_CASE("pedtrack run --record keeps the frames so that they replay bit for bi
   const std::string tracks = readFile(dir + "/a/tracks.csv");
   CHECK(lines(tracks).size() > 100);  // people were tracked
   CHECK(tracks == readFile(dir + "/b/tracks.csv"));
-  // A file that cannot be written is named.
-  const auto c = runHost({"run", kConfigs + "people_2d_legs.ini", "--max-frames", "1", "--record",
-                          dir + "/no/such/dir/x.rawlog", "-q"});
-  CHECK(c.exit_code != 0);
-  CHECK_THAT(c.output, Catch::Contains("x.rawlog"));
+  // A file that cannot be written (no such directory; a directory) is named before anything is
+  // written: exit 2, one line, no tracks.csv.
+  for (const std::string& bad : {dir + "/no/such/dir/x.rawlog", dir}) {
+    const auto c = runHost({"run", kConfigs + "people_2d_legs.ini", "--max-frames", "1", "--record",
+                            bad, "--out", dir + "/c", "-q"});
+    INFO(c.output);
+    CHECK(c.exit_code == 2);
+    CHECK(lines(c.output).size() == 1);
+    CHECK_THAT(c.output, Catch::Contains("--record " + bad));
+    CHECK_FALSE(std::filesystem::exists(dir + "/c/tracks.csv"));
+  }
+}
+
+TEST_CASE("a live queue of a negative length is refused, not made unbounded", "[live]") {
+  // Boost reads "-1" into an unsigned option as its largest value.
+  const auto r = runHost({"run", kConfigs + "people_2d_legs.ini", "--live-queue=-1", "-q"});
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(lines(r.output).size() == 1);
+  CHECK_THAT(r.output, Catch::Contains("--live-queue -1: expected a whole number of at least 0"));
 }

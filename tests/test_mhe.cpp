@@ -7,10 +7,10 @@
 #include <thread>
 #include <vector>
 
+#include "mhe_mlesac/mhe_ellipse.h"
+#include "mhe_mlesac/mhe_solver.h"
+#include "mhe_mlesac/mlesac_select.h"
 #include "mhe_walk.h"
-#include "pedtrack/track/mhe_ellipse.h"
-#include "pedtrack/track/mhe_mlesac.h"
-#include "pedtrack/track/mhe_solver.h"
 
 using namespace pedtrack::track::mhe;
 using pedtrack::test::MheWalk;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "pedtrack/object_table.h"
+#include "pedtrack/eval/object_table.h"
 #include "pedtrack/outputs.h"
 #include "pedtrack/point_labels.h"
 #include "test_support.h"

@@ -64,6 +64,17 @@ TEST_CASE("every kind of bad pipeline names file, section and key", "[config]") 
   CHECK(errorOf("[pipeline]\nstages = a b\n[a]\nplugin = rawlog\nfile = " + kSena +
                 "\n[b]\nplugin = rawlog\nfile = " + kSena + "\n") ==
         "p.ini: [b] plugin: 'rawlog' is a sensor; only the first stage may be one");
+  // Odometry sets the robot's pose: after a classifier had placed detections with the old one it
+  // would rewrite the frame under them.
+  CHECK(errorOf(source("").replace(source("").find("stages = source"), 15,
+                                   "stages = source seg cls odo") +
+                "[seg]\nplugin = scan_segments\n[cls]\nplugin = svm\nmodel = " +
+                PEDTRACK_SOURCE_DIR + "/models/legs_svm.yml\n[odo]\nplugin = scan_odometry\n") ==
+        "p.ini: [odo] plugin: 'scan_odometry' sets the robot's pose and must run before [cls] (a "
+        "classifier, which places what it finds in the fixed frame)");
+  CHECK_NOTHROW(
+      parse(source("").replace(source("").find("stages = source"), 15, "stages = source seg odo") +
+            "[seg]\nplugin = scan_segments\n[odo]\nplugin = scan_odometry\n"));
 }
 
 TEST_CASE("relative files resolve against the pipeline file's folder", "[config]") {

@@ -14,10 +14,12 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <random>
 
-#include "pedtrack/track/scan_odometry.h"
 #include "ray_world.h"
+#include "scan_odometry/scan_matcher.h"
+#include "test_support.h"
 
 using mrpt::poses::CPose2D;
 using pedtrack::track::ScanOdometry;
@@ -330,4 +332,64 @@ TEST_CASE("a match faster than max_speed since the last accepted pose is rejecte
   const CPose2D free = leap(6);
   CHECK(rejected == 0);
   CHECK(free.x() == Approx(0.95).margin(0.03));
+}
+
+namespace {
+
+// The rows of a CSV file (header dropped), each split at commas.
+std::vector<std::vector<std::string>> csvRows(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  const auto all = pedtrack::test::lines(pedtrack::test::readFile(path));
+  for (std::size_t i = 1; i < all.size(); ++i) {
+    std::vector<std::string> row;
+    std::string cell;
+    for (char c : all[i] + ",") {
+      if (c == ',') {
+        row.push_back(cell);
+        cell.clear();
+      } else {
+        cell += c;
+      }
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("the scan_odometry stage moves the robot before any stage places a detection",
+          "[scan_odometry][pipeline]") {
+  // The leg pipeline on a robot driving through a crowd with no odometry in its frames, scan
+  // matching on: svm places each leg in the fixed frame with the robot pose of the frame, and
+  // clusters.csv writes the same cluster with the pose the frame ends with. Each detection must
+  // sit where its cluster is (both written to 0.1 mm); when scan matching moved the pose after
+  // the classifier had used it (inside the tracker), they parted by as much as the robot moved.
+  using namespace pedtrack::test;
+  const std::string dir = freshDir("scan_odometry_stage");
+  const auto r =
+      runHost({"run", std::string(PEDTRACK_SOURCE_DIR) + "/configs/people_2d_legs.ini", "--input",
+               std::string(PEDTRACK_SOURCE_DIR) + "/configs/scenarios/legs_crowd_10_moving.ini",
+               "--set", "source.odometry=false", "--set", "odometry.mode=on", "--max-frames",
+               kSanitized ? "60" : "150", "--out", dir, "-q"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(jsonValue(readFile(dir + "/run.json"), "scan_matches") > 0);
+  std::map<std::pair<std::string, std::string>, std::pair<double, double>> cluster_at;
+  for (const auto& c : csvRows(dir + "/clusters.csv"))  // t,frame,cluster,points,x,y,...
+    cluster_at[{c[1], c[2]}] = {std::stod(c[4]), std::stod(c[5])};
+  std::size_t checked = 0;
+  double moved = 0;
+  for (const auto& d : csvRows(dir + "/detections.csv")) {  // t,frame,x,y,...,cluster
+    const auto it = cluster_at.find({d[1], d[10]});
+    REQUIRE(it != cluster_at.end());
+    INFO("frame " << d[1] << " cluster " << d[10]);
+    CHECK(std::stod(d[2]) == Approx(it->second.first).margin(2e-4));
+    CHECK(std::stod(d[3]) == Approx(it->second.second).margin(2e-4));
+    moved = std::max(
+        moved, std::hypot(std::stod(d[2]) - std::stod(d[4]), std::stod(d[3]) - std::stod(d[5])));
+    ++checked;
+  }
+  CHECK(checked > 100);
+  CHECK(moved > 0.5);  // the fixed frame is not the sensor's: the robot did move
 }

@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "leg_circles/leg_detection.h"
 #include "pedtrack/errors.h"
-#include "pedtrack/seg/leg_circles.h"
 #include "pedtrack/seg/scan_segments.h"
 
 using namespace pedtrack;

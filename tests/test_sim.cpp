@@ -9,7 +9,7 @@
 #include <map>
 
 #include "pedtrack/errors.h"
-#include "pedtrack/object_table.h"
+#include "pedtrack/eval/object_table.h"
 #include "pedtrack/sim/simulator.h"
 #include "pedtrack/velodyne_decode.h"
 #include "test_support.h"

@@ -14,8 +14,8 @@
 #include <fstream>
 #include <limits>
 
+#include "leg_people/static_scene.h"
 #include "pedtrack/errors.h"
-#include "pedtrack/track/static_scene.h"
 #include "ray_world.h"
 #include "test_support.h"
 

@@ -4,14 +4,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "pedtrack/track/gate.h"
+#include "imm_pdaf/gate.h"
+#include "imm_pdaf/jpda.h"
+#include "imm_pdaf/occlusion.h"
+#include "imm_pdaf/pda.h"
 #include "pedtrack/track/gnn.h"
 #include "pedtrack/track/imm.h"
-#include "pedtrack/track/jpda.h"
 #include "pedtrack/track/kalman.h"
 #include "pedtrack/track/management.h"
-#include "pedtrack/track/occlusion.h"
-#include "pedtrack/track/pda.h"
 #include "pedtrack/track/tracker_base.h"
 
 using namespace pedtrack;

@@ -14,6 +14,8 @@
 
 #include "pedtrack/errors.h"
 #include "pedtrack/frame.h"
+#include "pedtrack/param_table.h"
+#include "pedtrack/text.h"
 #include "pedtrack/velodyne_decode.h"
 
 namespace pedtrack {
@@ -25,13 +27,66 @@ using mrpt::obs::CObservationVelodyneScan;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::set<long> frameSet(const ParamSet& p, const std::string& key) {
+struct FaultParams {
+  long seed = 1;
+  double nonfinite_ranges = 0, zero_ranges = 0, max_ranges = 0;  // fractions of returns
+  long empty_every = 0, blind_at = -1, blind_frames = 30, drop_every = 0;
+  std::string huge_cloud_at;  // frame lists: numbers separated by spaces or commas
+  long huge_cloud_points = 1000000;
+  std::string repeat_time_at, backwards_time_at, jump_time_at;
+  double time_jump = 600;  // s
+  std::string nan_time_at, odometry_jump_at;
+  double odometry_jump = 5;  // m
+};
+
+const ParamTable<FaultParams>& table() {
+  using P = FaultParams;
+  static const auto t =
+      ParamTable<P>()
+          .integer(&P::seed, "seed", "", 0, 4294967295.0, "random seed of the range faults")
+          .real(&P::nonfinite_ranges, "nonfinite_ranges", "", 0, 1,
+                "fraction of returns made NaN or +inf (flagged valid, as a buggy driver would); a "
+                "VLP-16 revolution is turned into a point cloud first")
+          .real(&P::zero_ranges, "zero_ranges", "", 0, 1, "fraction of returns made 0 m")
+          .real(&P::max_ranges, "max_ranges", "", 0, 1,
+                "fraction of returns put at the scanner's maximum range (100 m for clouds)")
+          .integer(&P::empty_every, "empty_every", "frames", 0, 1e9,
+                   "every N-th frame's scans and clouds are emptied (0: never)")
+          .integer(&P::blind_at, "blind_at", "frame", -1, 1e9,
+                   "from this frame the sensor is blind (every scan and cloud empty) for "
+                   "blind_frames frames (-1: never)")
+          .integer(&P::blind_frames, "blind_frames", "frames", 1, 1e9,
+                   "how long the sensor is blind")
+          .integer(&P::drop_every, "drop_every", "frames", 0, 1e9,
+                   "every N-th frame of the source is never delivered (0: never)")
+          .text(&P::huge_cloud_at, "huge_cloud_at",
+                "frames (0-based, of the source) that get an extra cloud of huge_cloud_points "
+                "points")
+          .integer(&P::huge_cloud_points, "huge_cloud_points", "", 1, 1e8,
+                   "points of that cloud, spread over 60 m x 60 m x 3 m")
+          .text(&P::repeat_time_at, "repeat_time_at",
+                "frames stamped with the previous frame's time")
+          .text(&P::backwards_time_at, "backwards_time_at",
+                "frames stamped 1 s before the previous frame")
+          .text(&P::jump_time_at, "jump_time_at",
+                "frames from which every stamp is time_jump later")
+          .real(&P::time_jump, "time_jump", "s", -1e9, 1e9, "size of each time jump")
+          .text(&P::nan_time_at, "nan_time_at", "frames stamped NaN")
+          .text(&P::odometry_jump_at, "odometry_jump_at",
+                "frames from which the robot pose is odometry_jump further along x")
+          .real(&P::odometry_jump, "odometry_jump", "m", -1e6, 1e6, "size of each odometry jump");
+  return t;
+}
+
+// The frame numbers of a frame-list key (`member` of `f`).
+std::set<long> frameSet(const ParamSet& p, const FaultParams& f, std::string FaultParams::*member) {
   std::set<long> out;
-  if (p.getString(key).empty()) return out;
-  for (double v : p.getNumbers(key)) {
+  const std::string& text = f.*member;
+  if (text.empty()) return out;
+  const std::string where = table().where(p, member);
+  for (const double v : parseNumbers(text, 0, where)) {
     if (v < 0 || v != std::floor(v))
-      throw ConfigError(p.where(key) + ": '" + p.getString(key) +
-                        "': frame numbers are whole numbers from 0");
+      throw ConfigError(where + ": '" + text + "': frame numbers are whole numbers from 0");
     out.insert(static_cast<long>(v));
   }
   return out;
@@ -56,24 +111,26 @@ mrpt::obs::CObservation::Ptr asPointCloud(const CObservationVelodyneScan& velo) 
 class FaultInjector : public Sensor {
  public:
   FaultInjector(std::unique_ptr<Sensor> inner, const ParamSet& p)
+      : FaultInjector(std::move(inner), p, table().read(p)) {}
+  FaultInjector(std::unique_ptr<Sensor> inner, const ParamSet& p, const FaultParams& f)
       : inner_(std::move(inner)),
-        rng_(static_cast<std::uint32_t>(p.getInt("seed"))),
-        nonfinite_(p.getDouble("nonfinite_ranges")),
-        zero_(p.getDouble("zero_ranges")),
-        max_(p.getDouble("max_ranges")),
-        empty_every_(p.getInt("empty_every")),
-        blind_at_(p.getInt("blind_at")),
-        blind_frames_(p.getInt("blind_frames")),
-        drop_every_(p.getInt("drop_every")),
-        huge_points_(p.getInt("huge_cloud_points")),
-        time_jump_(p.getDouble("time_jump")),
-        odometry_jump_(p.getDouble("odometry_jump")),
-        huge_at_(frameSet(p, "huge_cloud_at")),
-        repeat_at_(frameSet(p, "repeat_time_at")),
-        back_at_(frameSet(p, "backwards_time_at")),
-        jump_at_(frameSet(p, "jump_time_at")),
-        odometry_at_(frameSet(p, "odometry_jump_at")),
-        nan_time_at_(frameSet(p, "nan_time_at")) {}
+        rng_(static_cast<std::uint32_t>(f.seed)),
+        nonfinite_(f.nonfinite_ranges),
+        zero_(f.zero_ranges),
+        max_(f.max_ranges),
+        empty_every_(f.empty_every),
+        blind_at_(f.blind_at),
+        blind_frames_(f.blind_frames),
+        drop_every_(f.drop_every),
+        huge_points_(f.huge_cloud_points),
+        time_jump_(f.time_jump),
+        odometry_jump_(f.odometry_jump),
+        huge_at_(frameSet(p, f, &FaultParams::huge_cloud_at)),
+        repeat_at_(frameSet(p, f, &FaultParams::repeat_time_at)),
+        back_at_(frameSet(p, f, &FaultParams::backwards_time_at)),
+        jump_at_(frameSet(p, f, &FaultParams::jump_time_at)),
+        odometry_at_(frameSet(p, f, &FaultParams::odometry_jump_at)),
+        nan_time_at_(frameSet(p, f, &FaultParams::nan_time_at)) {}
 
   void start(const std::string& out_dir) override { inner_->start(out_dir); }
   void finish() override { inner_->finish(); }
@@ -217,39 +274,7 @@ class FaultInjector : public Sensor {
 }  // namespace
 
 const std::vector<ParamSpec>& faultParams() {
-  static const std::vector<ParamSpec> specs{
-      ParamSpec::integer("seed", 1, "", 0, 4294967295.0, "random seed of the range faults"),
-      ParamSpec::real("nonfinite_ranges", 0.0, "", 0, 1,
-                      "fraction of returns made NaN or +inf (flagged valid, as a buggy driver "
-                      "would); a VLP-16 revolution is turned into a point cloud first"),
-      ParamSpec::real("zero_ranges", 0.0, "", 0, 1, "fraction of returns made 0 m"),
-      ParamSpec::real("max_ranges", 0.0, "", 0, 1,
-                      "fraction of returns put at the scanner's maximum range (100 m for clouds)"),
-      ParamSpec::integer("empty_every", 0, "frames", 0, 1e9,
-                         "every N-th frame's scans and clouds are emptied (0: never)"),
-      ParamSpec::integer("blind_at", -1, "frame", -1, 1e9,
-                         "from this frame the sensor is blind (every scan and cloud empty) for "
-                         "blind_frames frames (-1: never)"),
-      ParamSpec::integer("blind_frames", 30, "frames", 1, 1e9, "how long the sensor is blind"),
-      ParamSpec::integer("drop_every", 0, "frames", 0, 1e9,
-                         "every N-th frame of the source is never delivered (0: never)"),
-      ParamSpec::text("huge_cloud_at", std::string(""),
-                      "frames (0-based, of the source) that get an extra cloud of "
-                      "huge_cloud_points points"),
-      ParamSpec::integer("huge_cloud_points", 1000000, "", 1, 1e8,
-                         "points of that cloud, spread over 60 m x 60 m x 3 m"),
-      ParamSpec::text("repeat_time_at", std::string(""),
-                      "frames stamped with the previous frame's time"),
-      ParamSpec::text("backwards_time_at", std::string(""),
-                      "frames stamped 1 s before the previous frame"),
-      ParamSpec::text("jump_time_at", std::string(""),
-                      "frames from which every stamp is time_jump later"),
-      ParamSpec::real("time_jump", 600.0, "s", -1e9, 1e9, "size of each time jump"),
-      ParamSpec::text("nan_time_at", std::string(""), "frames stamped NaN"),
-      ParamSpec::text("odometry_jump_at", std::string(""),
-                      "frames from which the robot pose is odometry_jump further along x"),
-      ParamSpec::real("odometry_jump", 5.0, "m", -1e6, 1e6, "size of each odometry jump"),
-  };
+  static const std::vector<ParamSpec> specs = table().specs();
   return specs;
 }
 

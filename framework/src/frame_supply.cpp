@@ -32,16 +32,16 @@ bool FrameSupply::read(Frame& frame, Clock::time_point& arrival) {
 void FrameSupply::readLoop() {
   Frame frame;
   Clock::time_point arrival;
-  while (!stop_ && !Pipeline::stopRequested() && read(frame, arrival))
+  while (!stop_ && !stopRequested() && read(frame, arrival))
     queue_->push(std::move(frame), arrival);
   queue_->close();
 }
 
 bool FrameSupply::next(Frame& frame, Clock::time_point& arrival) {
-  if (!live_) return !Pipeline::stopRequested() && read(frame, arrival);
+  if (!live_) return !stopRequested() && read(frame, arrival);
   FrameQueue::Item item;
   // Short waits, so a stop request is seen while the device is quiet.
-  while (!Pipeline::stopRequested()) {
+  while (!stopRequested()) {
     if (queue_->pop(item, std::chrono::milliseconds(50))) {
       frame = std::move(item.frame);
       arrival = item.arrival;

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/text.h"
 
 namespace pedtrack {
@@ -98,6 +101,33 @@ static std::string joinNumbers(const std::vector<double>& v) {
   for (std::size_t i = 0; i < v.size(); ++i) os << (i ? " " : "") << v[i];
   return os.str();
 }
+
+std::string shortestNumber(double v) {
+  char buf[40];
+  // From 6 digits on, as `%g` writes them: 100 is "100", not "1e+02".
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
+namespace param_detail {
+
+std::string roundedNumber(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.15g", v);
+  return buf;
+}
+
+std::string joinNumbers(const std::vector<double>& v, bool exact) {
+  std::string out;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out += (i ? " " : "") + (exact ? shortestNumber(v[i]) : roundedNumber(v[i]));
+  return out;
+}
+
+}  // namespace param_detail
 
 ParamSpec ParamSpec::vector(std::string name, std::optional<std::vector<double>> def,
                             std::string unit, std::size_t length, double min, double max,
@@ -270,18 +300,22 @@ std::vector<std::string> ParamSet::getList(const std::string& key) const {
 }
 
 std::vector<double> ParamSet::getNumbers(const std::string& key, std::size_t n) const {
+  return parseNumbers(getString(key), n, where(key));
+}
+
+std::vector<double> parseNumbers(const std::string& value, std::size_t n,
+                                 const std::string& where) {
   std::vector<double> out;
-  std::string text = getString(key);
+  std::string text = value;
   std::replace(text.begin(), text.end(), ';', ' ');
   for (const auto& tok : splitList(text)) {
     char* end = nullptr;
     const double v = std::strtod(tok.c_str(), &end);
-    if (end == tok.c_str() || *end)
-      throw ConfigError(where(key) + ": '" + tok + "' is not a number");
+    if (end == tok.c_str() || *end) throw ConfigError(where + ": '" + tok + "' is not a number");
     out.push_back(v);
   }
   if (n && out.size() != n)
-    throw ConfigError(where(key) + ": expected " + std::to_string(n) + " numbers, got " +
+    throw ConfigError(where + ": expected " + std::to_string(n) + " numbers, got " +
                       std::to_string(out.size()));
   return out;
 }
@@ -305,7 +339,7 @@ ParamSet validateSection(const std::vector<ParamSpec>& specs,
                            [&](const auto& kv) { return kv.first == spec.name; });
     if (it == given.end()) {
       if (spec.required()) throw ConfigError(where + ": missing required key (" + spec.doc + ")");
-      out.set(spec.name, *spec.default_value);
+      out.setDefault(spec.name, *spec.default_value);
       continue;
     }
     out.set(spec.name, validateValue(spec, it->second, where));

@@ -40,11 +40,6 @@ std::unique_ptr<Plugin> create(const PipelineConfig& cfg, const StageConfig& sc)
 
 }  // namespace
 
-std::atomic<bool>& Pipeline::stopRequested() {
-  static std::atomic<bool> flag{false};
-  return flag;
-}
-
 Pipeline::Pipeline(const PipelineConfig& config) : config_(config) {
   for (std::size_t i = 0; i < config.stages.size(); ++i) {
     std::unique_ptr<Plugin> p = create(config, config.stages[i]);
@@ -122,6 +117,7 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   Frame frame;
   Clock::time_point arrival;
   FrameGuard guard;
+  std::vector<PlanarPoint> people;
   while (!stopRequested()) {
     const auto t0 = Clock::now();
     if (!supply.next(frame, arrival)) break;
@@ -131,6 +127,7 @@ RunSummary Pipeline::run(const RunOptions& opt) {
       ++sum.frames_skipped;
       continue;
     }
+    frame.people = people;  // as the tracker last knew them
     bool ok = true;
     for (std::size_t i = 0; i < stages_.size() && ok; ++i) {
       const auto ts = Clock::now();
@@ -146,6 +143,7 @@ RunSummary Pipeline::run(const RunOptions& opt) {
       }
       sum.stages[i + 1].add(msSince(ts));
     }
+    people = frame.people;
     if (!ok) {
       ++sum.frames_failed;
       continue;

@@ -10,6 +10,7 @@
 
 #include "pedtrack/errors.h"
 #include "pedtrack/fault_injection.h"
+#include "pedtrack/ini_text.h"
 #include "pedtrack/text.h"
 
 namespace fs = std::filesystem;
@@ -94,7 +95,7 @@ ParamSet sectionParams(const IniModel& model, const std::string& file, const std
     const std::string where = params.where(spec.name);
     if (!given) {
       if (spec.required()) throw ConfigError(where + ": missing required key (" + spec.doc + ")");
-      params.set(spec.name, *spec.default_value);
+      params.setDefault(spec.name, *spec.default_value);
       continue;
     }
     std::string value = *given;
@@ -107,65 +108,6 @@ ParamSet sectionParams(const IniModel& model, const std::string& file, const std
 }
 
 }  // namespace
-
-std::string preprocessPipelineText(const std::string& text, const std::string& file) {
-  // Names @define'd in the file are MRPT's to expand; any other ${NAME} comes from the environment.
-  std::set<std::string> defined;
-  {
-    std::istringstream is(text);
-    std::string line;
-    while (std::getline(is, line)) {
-      std::istringstream ls(trim(line));
-      std::string kw, name;
-      if (ls >> kw >> name && kw == "@define") defined.insert(name);
-    }
-  }
-  std::ostringstream out;
-  std::istringstream is(text);
-  std::string line;
-  int lineno = 0;
-  while (std::getline(is, line)) {
-    ++lineno;
-    const std::string t = trim(line);
-    if (!t.empty() && (t[0] == ';' || t[0] == '#')) {
-      out << "\n";  // keep line numbers of MRPT's own messages right
-      continue;
-    }
-    // Inline comments: ';' or '#' after white space.
-    for (std::size_t i = 1; i < line.size(); ++i) {
-      if ((line[i] == ';' || line[i] == '#') && (line[i - 1] == ' ' || line[i - 1] == '\t')) {
-        line.resize(i);
-        break;
-      }
-    }
-    std::string expanded;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      if (line[i] == '$' && i + 1 < line.size() && line[i + 1] == '{') {
-        const auto close = line.find('}', i);
-        if (close == std::string::npos)
-          throw ConfigError(file + ":" + std::to_string(lineno) + ": unterminated '${'");
-        const std::string name = line.substr(i + 2, close - i - 2);
-        if (defined.count(name)) {
-          expanded += line.substr(i, close - i + 1);
-        } else if (const char* v = std::getenv(name.c_str())) {
-          // A relative path set in the shell means relative to the shell's directory, not to
-          // the pipeline file's: make it absolute before file keys are resolved.
-          std::error_code ec;
-          const bool relative_dir = v[0] != '\0' && v[0] != '/' && fs::exists(v, ec);
-          expanded += relative_dir ? fs::absolute(v).lexically_normal().string() : std::string(v);
-        } else {
-          throw ConfigError(file + ":" + std::to_string(lineno) + ": ${" + name +
-                            "} is neither @define'd in the file nor set in the environment");
-        }
-        i = close;
-      } else {
-        expanded += line[i];
-      }
-    }
-    out << expanded << "\n";
-  }
-  return out.str();
-}
 
 PipelineConfig PipelineConfig::load(const std::string& file, const PipelineOverrides& overrides,
                                     const PluginRegistry& registry) {
@@ -187,7 +129,7 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
   cfg.file = file;
   IniModel model;
   try {
-    mrpt::config::CConfigFileMemory raw(preprocessPipelineText(text, file));
+    mrpt::config::CConfigFileMemory raw(preprocessIniText(text, file));
     model = readModel(raw);
   } catch (const ConfigError&) {
     throw;
@@ -308,6 +250,14 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
     if (i > 0 && d.category == Category::Sensor)
       throw ConfigError(file + ": [" + name + "] plugin: '" + d.name +
                         "' is a sensor; only the first stage may be one");
+    if (d.category == Category::Odometry)
+      for (const StageConfig& before : cfg.stages)
+        if (before.descriptor->category == Category::Classifier ||
+            before.descriptor->category == Category::Tracker)
+          throw ConfigError(file + ": [" + name + "] plugin: '" + d.name +
+                            "' sets the robot's pose and must run before [" + before.section +
+                            "] (a " + toString(before.descriptor->category) +
+                            ", which places what it finds in the fixed frame)");
 
     sc.params =
         sectionParams(model, file, name, d.params, d.accepts_other_keys, "plugin '" + d.name + "'",

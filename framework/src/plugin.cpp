@@ -7,6 +7,7 @@ namespace pedtrack {
 Plugin::~Plugin() = default;
 Sensor::~Sensor() = default;
 Stage::~Stage() = default;
+Odometry::~Odometry() = default;
 Segmenter::~Segmenter() = default;
 Classifier::~Classifier() = default;
 Tracker::~Tracker() = default;
@@ -15,6 +16,8 @@ const char* toString(Category c) {
   switch (c) {
     case Category::Sensor:
       return "sensor";
+    case Category::Odometry:
+      return "odometry";
     case Category::Segmenter:
       return "segmenter";
     case Category::Classifier:

@@ -17,4 +17,12 @@ void ReplayPacer::wait(double t) {
   if (due > now) std::this_thread::sleep_until(due);
 }
 
+const ParamTable<ReplayRateParams>& replayRateTable() {
+  static const auto t = ParamTable<ReplayRateParams>().choice(
+      &ReplayRateParams::realtime, "rate", {{"max", false}, {"realtime", true}},
+      "max: as fast as the pipeline runs; realtime: at the pace the data was recorded (its "
+      "timestamps)");
+  return t;
+}
+
 }  // namespace pedtrack

@@ -53,4 +53,19 @@ void WarnOnce::operator()(const std::string& message) {
   std::cerr << "warning: " << prefix_ << message << "\n";
 }
 
+std::vector<std::string> splitFields(const std::string& line, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : line) {
+    if (c == sep) {
+      out.push_back(trim(cur));
+      cur.clear();
+    } else if (c != '\r') {
+      cur += c;
+    }
+  }
+  out.push_back(trim(cur));
+  return out;
+}
+
 }  // namespace pedtrack

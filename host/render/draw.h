@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "pedtrack/eval/object_table.h"
 #include "pedtrack/frame.h"
-#include "pedtrack/object_table.h"
 #include "pedtrack/point_labels.h"
 #include "view.h"
 

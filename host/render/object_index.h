@@ -4,7 +4,7 @@
 #include <map>
 #include <vector>
 
-#include "pedtrack/object_table.h"
+#include "pedtrack/eval/object_table.h"
 
 namespace pedtrack::render {
 

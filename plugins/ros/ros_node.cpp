@@ -47,4 +47,14 @@ ResolvedTopic resolveTopic(const std::string& topic) {
   return {ros::NodeHandle(), t};
 }
 
+const ParamTable<NodeParams>& nodeTable() {
+  static const auto t =
+      ParamTable<NodeParams>()
+          .text(&NodeParams::node, "node",
+                "ROS node name (the first ROS plugin created names the node)")
+          .real(&NodeParams::master_timeout, "master_timeout", "s", 0, 3600,
+                "how long to wait for the ROS master at $ROS_MASTER_URI before giving up");
+  return t;
+}
+
 }  // namespace pedtrack::ros_plugins

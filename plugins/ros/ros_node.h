@@ -5,7 +5,16 @@
 
 #include <string>
 
+#include "pedtrack/param_table.h"
+
 namespace pedtrack::ros_plugins {
+
+/// The node keys every ROS plugin declares.
+struct NodeParams {
+  std::string node = "pedtrack";  ///< ROS node name (the first ROS plugin created names it)
+  double master_timeout = 10.0;   ///< s to wait for the master at $ROS_MASTER_URI
+};
+const ParamTable<NodeParams>& nodeTable();
 
 /// Initialises roscpp once per process as node `node_name` (the first ROS plugin created names
 /// the node; later names are ignored) and waits up to `master_timeout` s for the master at

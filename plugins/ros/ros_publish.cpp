@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "bag_poses.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/text.h"
@@ -27,25 +28,69 @@ std::string sourceKey(const PluginContext& ctx, const std::string& key, const st
   return v.empty() ? def : v;
 }
 
+struct RosPublishParams {
+  std::string tracks_topic = "~tracks", people_topic = "~people", markers_topic = "~markers";
+  std::string frame = "fixed";  // fixed, robot or sensor
+  std::string frame_id;         // empty: the source's fixed_frame or base_frame
+  std::string skip_status;      // comma list
+  MarkerStyle style;
+  NodeParams node;
+};
+
+const ParamTable<RosPublishParams>& table() {
+  using P = RosPublishParams;
+  static const auto t =
+      ParamTable<P>()
+          .text(&P::tracks_topic, "tracks_topic",
+                "geometry_msgs/PoseArray, one pose per track; '~name' is private to the node; "
+                "empty: not published")
+          .text(&P::people_topic, "people_topic",
+                "sensor_msgs/PointCloud2, one point per track in the PoseArray's order: x y z id "
+                "vx vy yaw alpha beta cov_xx cov_xy cov_yy score (NaN: unknown) and status (0 "
+                "tentative, 1 confirmed, 2 coasting, 3 following, 255 other); empty: not "
+                "published")
+          .text(&P::markers_topic, "markers_topic",
+                "visualization_msgs/MarkerArray for rviz (namespaces torso, id, velocity, "
+                "covariance, following); empty: not published")
+          .choice(&P::frame, "frame",
+                  {{"fixed", "fixed"}, {"robot", "robot"}, {"sensor", "sensor"}},
+                  "frame the tracks are expressed in: the source's fixed frame, the robot (base) "
+                  "frame or the (first) sensor's frame")
+          .text(&P::frame_id, "frame_id",
+                "header.frame_id of the messages; empty: the source's fixed_frame (frame = "
+                "fixed, default odom) or base_frame (frame = robot, default base_link)")
+          .text(&P::skip_status, "skip_status",
+                "track statuses not published (comma list, e.g. tentative); empty: every track, "
+                "as in tracks.csv")
+          .real(path(&P::style, &MarkerStyle::person_height), "person_height", "m", 0.1, 3,
+                "height of the rviz torso columns")
+          .real(path(&P::style, &MarkerStyle::arrow_seconds), "arrow_seconds", "s", 0, 10,
+                "velocity arrows reach where the person will be after this long")
+          .include(&P::node, nodeTable());
+  return t;
+}
+
 class RosPublish : public Tracker {
  public:
-  explicit RosPublish(const PluginContext& ctx)
-      : skip_(ctx.params.getList("skip_status")),
-        frame_(ctx.params.getString("frame")),
-        frame_id_(ctx.params.getString("frame_id")) {
-    style_.person_height = ctx.params.getDouble("person_height");
-    style_.arrow_seconds = ctx.params.getDouble("arrow_seconds");
+  explicit RosPublish(const PluginContext& ctx) : RosPublish(ctx, table().read(ctx.params)) {}
+  RosPublish(const PluginContext& ctx, const RosPublishParams& p)
+      : skip_(splitList(p.skip_status)), frame_(p.frame), frame_id_(p.frame_id), style_(p.style) {
     // The tracks are in the source's fixed frame; the robot frame is its base frame.
-    if (frame_id_.empty() && frame_ == "fixed") frame_id_ = sourceKey(ctx, "fixed_frame", "odom");
+    const rosbag_source::RobotFrameParams frames;  // the source's defaults
+    if (frame_id_.empty() && frame_ == "fixed")
+      frame_id_ = sourceKey(ctx, "fixed_frame", frames.fixed_frame);
     if (frame_id_.empty() && frame_ == "robot")
-      frame_id_ = sourceKey(ctx, "base_frame", "base_link");
+      frame_id_ = sourceKey(ctx, "base_frame", frames.base_frame);
     if (frame_id_.empty())
-      throw ConfigError(ctx.params.where("frame_id") +
+      throw ConfigError(table().where(ctx.params, &RosPublishParams::frame_id) +
                         ": frame = sensor needs the sensor's tf frame name here");
-    ensureNode(ctx.params.getString("node"), ctx.params.getDouble("master_timeout"));
-    tracks_ = advertise<geometry_msgs::PoseArray>(ctx, "tracks_topic");
-    people_ = advertise<sensor_msgs::PointCloud2>(ctx, "people_topic");
-    markers_ = advertise<visualization_msgs::MarkerArray>(ctx, "markers_topic");
+    ensureNode(p.node.node, p.node.master_timeout);
+    tracks_ =
+        advertise<geometry_msgs::PoseArray>(ctx, p.tracks_topic, &RosPublishParams::tracks_topic);
+    people_ =
+        advertise<sensor_msgs::PointCloud2>(ctx, p.people_topic, &RosPublishParams::people_topic);
+    markers_ = advertise<visualization_msgs::MarkerArray>(ctx, p.markers_topic,
+                                                          &RosPublishParams::markers_topic);
   }
 
   void process(Frame& frame) override {
@@ -71,17 +116,18 @@ class RosPublish : public Tracker {
 
  private:
   template <class M>
-  std::optional<ros::Publisher> advertise(const PluginContext& ctx, const std::string& key) {
-    const std::string topic = ctx.params.getString(key);
+  std::optional<ros::Publisher> advertise(const PluginContext& ctx, const std::string& topic,
+                                          std::string RosPublishParams::*key_member) {
+    const std::string key = table().where(ctx.params, key_member);
     if (trim(topic).empty()) return std::nullopt;  // that output is not wanted
     try {
       ResolvedTopic r = resolveTopic(topic);
       // Deep enough for a subscriber that reads in bursts; a live one reads every message.
       return r.nh.advertise<M>(r.name, 100);
     } catch (const ConfigError& e) {
-      throw ConfigError(ctx.params.where(key) + ": " + e.what());
+      throw ConfigError(key + ": " + e.what());
     } catch (const ros::Exception& e) {
-      throw ConfigError(ctx.params.where(key) + ": " + oneLine(e.what()));
+      throw ConfigError(key + ": " + oneLine(e.what()));
     }
   }
 
@@ -96,35 +142,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "Publishes tracks to ROS1: PoseArray, a people PointCloud2 and rviz markers";
-  d.params = {
-      ParamSpec::text("tracks_topic", std::string("~tracks"),
-                      "geometry_msgs/PoseArray, one pose per track; '~name' is private to the "
-                      "node; empty: not published"),
-      ParamSpec::text("people_topic", std::string("~people"),
-                      "sensor_msgs/PointCloud2, one point per track in the PoseArray's order: x y "
-                      "z id vx vy yaw alpha beta cov_xx cov_xy cov_yy score (NaN: unknown) and "
-                      "status (0 tentative, 1 confirmed, 2 coasting, 3 following, 255 other); "
-                      "empty: not published"),
-      ParamSpec::text("markers_topic", std::string("~markers"),
-                      "visualization_msgs/MarkerArray for rviz (namespaces torso, id, velocity, "
-                      "covariance, following); empty: not published"),
-      ParamSpec::choice("frame", "fixed", {"fixed", "robot", "sensor"},
-                        "frame the tracks are expressed in: the source's fixed frame, the robot "
-                        "(base) frame or the (first) sensor's frame"),
-      ParamSpec::text("frame_id", std::string(),
-                      "header.frame_id of the messages; empty: the source's fixed_frame (frame = "
-                      "fixed, default odom) or base_frame (frame = robot, default base_link)"),
-      ParamSpec::text("skip_status", std::string(),
-                      "track statuses not published (comma list, e.g. tentative); empty: every "
-                      "track, as in tracks.csv"),
-      ParamSpec::real("person_height", 1.7, "m", 0.1, 3, "height of the rviz torso columns"),
-      ParamSpec::real("arrow_seconds", 1.0, "s", 0, 10,
-                      "velocity arrows reach where the person will be after this long"),
-      ParamSpec::text("node", std::string("pedtrack"),
-                      "ROS node name (the first ROS plugin created names the node)"),
-      ParamSpec::real("master_timeout", 10.0, "s", 0, 3600,
-                      "how long to wait for the ROS master at $ROS_MASTER_URI before giving up"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<RosPublish>(ctx);
   };

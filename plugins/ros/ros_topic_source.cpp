@@ -20,8 +20,8 @@
 #include "bag_poses.h"
 #include "live_poses.h"
 #include "pedtrack/errors.h"
-#include "pedtrack/pipeline.h"
 #include "pedtrack/plugin.h"
+#include "pedtrack/stop_request.h"
 #include "pedtrack/text.h"
 #include "ros_frames.h"
 #include "ros_node.h"
@@ -36,28 +36,63 @@ std::string tfFrame(const std::string& id) {
   return !id.empty() && id[0] == '/' ? id.substr(1) : id;
 }
 
+struct RosTopicParams {
+  std::string topic = "/scan";  // comma list
+  rosbag_source::RobotFrameParams frames;
+  double tf_timeout = 0.1;    // s a scan waits for /tf to reach its stamp
+  double idle_timeout = 0.0;  // s; 0: wait until SIGINT/SIGTERM
+  bool end_on_idle = false;
+  long queue_size = 20;
+  NodeParams node;
+};
+
+const ParamTable<RosTopicParams>& table() {
+  using P = RosTopicParams;
+  static const auto t =
+      ParamTable<P>()
+          .text(&P::topic, "topic",
+                "topics to subscribe to (comma list; LaserScan or PointCloud2, several are "
+                "merged, see merge_window); '~name' is private to the node")
+          .include(&P::frames, rosbag_source::robotFrameTable())
+          .real(&P::tf_timeout, "tf_timeout", "s", 0, 10,
+                "how long a scan waits for /tf to reach its stamp (only when /tf links "
+                "fixed_frame and base_frame at all)")
+          .real(&P::idle_timeout, "idle_timeout", "s", 0, 1e6,
+                "fail (or end, see end_on_idle) after this long without a message, counted once "
+                "a message came or a publisher is connected; 0: wait until SIGINT/SIGTERM")
+          .boolean(&P::end_on_idle, "end_on_idle",
+                   "treat idle_timeout as the end of the stream (a bag played into the node)")
+          .integer(&P::queue_size, "queue_size", "", 1, 100000,
+                   "messages waiting for the pipeline; beyond it the oldest is dropped "
+                   "(queue_drops in run.json)")
+          .include(&P::node, nodeTable());
+  return t;
+}
+
 class RosTopicSource : public Sensor {
  public:
   explicit RosTopicSource(const PluginContext& ctx)
-      : topics_(ctx.params.getList("topic")),
-        merge_window_(ctx.params.getDouble("merge_window")),
-        idle_timeout_(ctx.params.getDouble("idle_timeout")),
-        end_on_idle_(ctx.params.getBool("end_on_idle")),
-        queue_size_(static_cast<std::size_t>(ctx.params.getInt("queue_size"))) {
+      : RosTopicSource(ctx, table().read(ctx.params)) {}
+  RosTopicSource(const PluginContext& ctx, const RosTopicParams& p)
+      : topics_(splitList(p.topic)),
+        merge_window_(p.frames.merge_window),
+        idle_timeout_(p.idle_timeout),
+        end_on_idle_(p.end_on_idle),
+        queue_size_(static_cast<std::size_t>(p.queue_size)) {
     if (topics_.empty()) throw ConfigError("topic: no topic given");
-    rosbag_source::MountTable mounts =
-        rosbag_source::parseMounts(ctx.params.getString("mounts"), ctx.params.where("mounts"));
-    rosbag_source::checkMountTopics(mounts, topics_, ctx.params.where("mounts"), "one of `topic`");
-    ensureNode(ctx.params.getString("node"), ctx.params.getDouble("master_timeout"));
-    poses_ = std::make_unique<LivePoses>(ctx.params.getString("fixed_frame"),
-                                         ctx.params.getString("base_frame"), std::move(mounts),
-                                         topics_.size() > 1, ctx.params.getDouble("tf_timeout"));
+    const std::string mounts_key = table().where(
+        ctx.params, path(&RosTopicParams::frames, &rosbag_source::RobotFrameParams::mounts));
+    rosbag_source::MountTable mounts = rosbag_source::parseMounts(p.frames.mounts, mounts_key);
+    rosbag_source::checkMountTopics(mounts, topics_, mounts_key, "one of `topic`");
+    ensureNode(p.node.node, p.node.master_timeout);
+    poses_ = std::make_unique<LivePoses>(p.frames.fixed_frame, p.frames.base_frame,
+                                         std::move(mounts), topics_.size() > 1, p.tf_timeout);
     for (std::size_t i = 0; i < topics_.size(); ++i) {
       ResolvedTopic r;
       try {
         r = resolveTopic(topics_[i]);
       } catch (const ConfigError& e) {
-        throw ConfigError(ctx.params.where("topic") + ": " + e.what());
+        throw ConfigError(table().where(ctx.params, &RosTopicParams::topic) + ": " + e.what());
       }
       ros::SubscribeOptions ops;
       ops.template init<AnyMessage>(
@@ -89,7 +124,7 @@ class RosTopicSource : public Sensor {
         std::unique_lock<std::mutex> lk(m_);
         // Short waits: a stop request, or the end of ROS, is seen while the topics are quiet.
         while (pending_.empty()) {
-          if (Pipeline::stopRequested() || !ros::ok()) return false;
+          if (stopRequested() || !ros::ok()) return false;
           if (!counting) {
             // Asked without m_ held: roscpp takes its own locks for the publisher links.
             const bool had_messages = messages_ > 0;
@@ -188,7 +223,7 @@ class RosTopicSource : public Sensor {
     double lo = group.front().stamp.toSec(), hi = lo;
     while (group.size() < topics_.size()) {
       if (pending_.empty()) {
-        if (Pipeline::stopRequested()) break;
+        if (stopRequested()) break;
         cv_.wait_until(lk, deadline);
         if (pending_.empty() && Clock::now() >= deadline) break;
         continue;
@@ -259,38 +294,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Sensor;
   d.doc = "Live ROS1 LaserScan / PointCloud2 topics, robot and sensor poses from /tf";
-  d.params = {
-      ParamSpec::text("topic", std::string("/scan"),
-                      "topics to subscribe to (comma list; LaserScan or PointCloud2, several are "
-                      "merged, see merge_window); '~name' is private to the node"),
-      ParamSpec::text("fixed_frame", std::string("odom"),
-                      "tf frame tracking happens in (odom, map, ...)"),
-      ParamSpec::text("base_frame", std::string("base_link"), "tf frame of the robot body"),
-      ParamSpec::text("mounts", std::string(),
-                      "mounting poses on base_frame of topics /tf does not place: 'topic: x y z "
-                      "yaw_deg [pitch_deg [roll_deg]]' (m, deg), entries separated by ';' written "
-                      "right after a number"),
-      ParamSpec::real("merge_window", 0.1, "s", 0, 10,
-                      "several topics: messages of distinct topics whose stamps span at most "
-                      "this make one frame; 0: one message per frame"),
-      ParamSpec::real("tf_timeout", 0.1, "s", 0, 10,
-                      "how long a scan waits for /tf to reach its stamp (only when /tf links "
-                      "fixed_frame and base_frame at all)"),
-      ParamSpec::real("idle_timeout", 0.0, "s", 0, 1e6,
-                      "fail (or end, see end_on_idle) after this long without a message, counted "
-                      "once a message came or a publisher is connected; 0: wait until "
-                      "SIGINT/SIGTERM"),
-      ParamSpec::boolean("end_on_idle", false,
-                         "treat idle_timeout as the end of the stream (a bag played into the "
-                         "node)"),
-      ParamSpec::integer("queue_size", 20, "", 1, 100000,
-                         "messages waiting for the pipeline; beyond it the oldest is dropped "
-                         "(queue_drops in run.json)"),
-      ParamSpec::text("node", std::string("pedtrack"),
-                      "ROS node name (the first ROS plugin created names the node)"),
-      ParamSpec::real("master_timeout", 10.0, "s", 0, 3600,
-                      "how long to wait for the ROS master at $ROS_MASTER_URI before giving up"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<RosTopicSource>(ctx);
   };

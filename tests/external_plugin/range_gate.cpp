@@ -1,17 +1,37 @@
 // range_gate: a segmenter that keeps the points within [min_range, max_range] of the sensor as
 // one region-of-interest cluster. An example of a third-party plugin: one file, parameters
 // declared once, built against the installed framework.
+#include <pedtrack/param_table.h>
 #include <pedtrack/plugin.h>
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace {
 
+// The parameters: the struct's initialisers are the defaults, the table binds each INI key to
+// its member once (name, unit, range, doc), and a rule checks what one key cannot.
+struct RangeGateParams {
+  double min_range = 0.1;  // m
+  double max_range = 8.0;  // m
+};
+
+const pedtrack::ParamTable<RangeGateParams>& table() {
+  using P = RangeGateParams;
+  static const auto t =
+      pedtrack::ParamTable<P>()
+          .real(&P::min_range, "min_range", "m", 0, 1000, "closest range kept")
+          .real(&P::max_range, "max_range", "m", 0, 1000, "farthest range kept")
+          .check(&P::max_range, [](const P& p) {
+            return p.max_range < p.min_range ? std::string("below min_range") : std::string();
+          });
+  return t;
+}
+
 class RangeGate : public pedtrack::Segmenter {
  public:
-  explicit RangeGate(const pedtrack::PluginContext& ctx)
-      : min_(ctx.params.getDouble("min_range")), max_(ctx.params.getDouble("max_range")) {}
+  explicit RangeGate(const RangeGateParams& p) : min_(p.min_range), max_(p.max_range) {}
 
   void process(pedtrack::Frame& frame) override {
     const auto& cloud = frame.cloud();  // robot frame
@@ -39,16 +59,12 @@ class RangeGate : public pedtrack::Segmenter {
 };
 
 pedtrack::PluginDescriptor describe() {
-  using pedtrack::ParamSpec;
   pedtrack::PluginDescriptor d;
   d.category = pedtrack::Category::Segmenter;
   d.doc = "Keeps the points within a range band as one region-of-interest cluster (example plugin)";
-  d.params = {
-      ParamSpec::real("min_range", 0.1, "m", 0, 1000, "closest range kept"),
-      ParamSpec::real("max_range", 8.0, "m", 0, 1000, "farthest range kept"),
-  };
+  d.params = table().specs();
   d.create = [](const pedtrack::PluginContext& ctx) -> std::unique_ptr<pedtrack::Plugin> {
-    return std::make_unique<RangeGate>(ctx);
+    return std::make_unique<RangeGate>(table().read(ctx.params));
   };
   return d;
 }

@@ -55,7 +55,7 @@ struct Detection {
   double alpha = 0, beta = 0;  ///< torso ellipse semi-axes (m), 0 when unknown
 };
 
-/// A tracked person as reported in tracks.csv (see DESIGN.md "Outputs").
+/// A tracked person as reported in tracks.csv (docs/outputs.md).
 struct Track {
   long id = 0;
   double x = 0, y = 0;         ///< m, fixed frame
@@ -74,6 +74,11 @@ struct Track {
   /// The cluster (index into Frame::clusters) of the detection that updated the track this
   /// frame, -1 when none did: links a track to clusters.csv and point_labels.bin.
   int cluster = -1;
+};
+
+/// A place on the ground plane of the fixed frame (m).
+struct PlanarPoint {
+  double x = 0, y = 0;
 };
 
 /// The points one observation contributed to Frame::cloud().
@@ -116,6 +121,11 @@ struct Frame {
   int clusterFeatureIndex(const std::string& name) const;
   std::vector<Detection> detections;
   std::vector<Track> tracks;
+  /// Where the people a tracker follows are (fixed frame; tentative ones included, as far as the
+  /// tracker knows them): the pipeline hands every frame the last value a tracker wrote, and a
+  /// tracker overwrites it after its step. Stages before the tracker read it as last frame's
+  /// people: scan matching leaves their returns out, as people move and walls do not.
+  std::vector<PlanarPoint> people;
 
   /// Points of every range observation, in the robot frame, built on first use and cached, so a
   /// pipeline that needs no points (replay, import) never pays for them.

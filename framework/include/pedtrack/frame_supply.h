@@ -11,9 +11,10 @@
 #include <thread>
 
 #include "pedtrack/frame_queue.h"
-#include "pedtrack/pipeline.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/rawlog_recorder.h"
+#include "pedtrack/run_options.h"
+#include "pedtrack/stop_request.h"
 
 namespace pedtrack {
 
@@ -27,9 +28,9 @@ class FrameSupply {
   FrameSupply& operator=(const FrameSupply&) = delete;
 
   /// The next frame and when the source handed it over; false at the end of the stream, on a
-  /// source error (then error() says what) or once Pipeline::stopRequested() is set.
+  /// source error (then error() says what) or once stopRequested() is set.
   bool next(Frame& frame, Clock::time_point& arrival);
-  /// Ends reading: joins the live thread (which checks Pipeline::stopRequested() between reads).
+  /// Ends reading: joins the live thread (which checks stopRequested() between reads).
   void stop();
 
   bool live() const { return live_; }

@@ -1,5 +1,5 @@
 #pragma once
-// The output contract of DESIGN.md: tracks.csv, detections.csv and run.json.
+// The output contract (docs/outputs.md): tracks.csv, detections.csv, clusters.csv, run.json.
 #include <fstream>
 #include <string>
 #include <vector>

@@ -4,6 +4,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -53,8 +54,19 @@ class ParamSet {
   ParamSet(std::string file, std::string section)
       : file_(std::move(file)), section_(std::move(section)) {}
 
-  void set(const std::string& key, std::string value) { values_[key] = std::move(value); }
+  /// A value the pipeline gave (or a caller set).
+  void set(const std::string& key, std::string value) {
+    values_[key] = std::move(value);
+    given_.insert(key);
+  }
+  /// A declared default: readable like any value, but not given().
+  void setDefault(const std::string& key, std::string value) {
+    values_[key] = std::move(value);
+    given_.erase(key);
+  }
   bool has(const std::string& key) const { return values_.count(key) != 0; }
+  /// The pipeline gave this key (it is not the declared default).
+  bool given(const std::string& key) const { return given_.count(key) != 0; }
 
   const std::string& getString(const std::string& key) const;
   double getDouble(const std::string& key) const;
@@ -77,6 +89,7 @@ class ParamSet {
  private:
   std::string file_, section_;
   std::map<std::string, std::string> values_;
+  std::set<std::string> given_;
 };
 
 /// Checks `value` against `spec`; returns the normalised value or throws ConfigError whose text
@@ -91,6 +104,13 @@ ParamSet validateSection(const std::vector<ParamSpec>& specs,
                          const std::vector<std::pair<std::string, std::string>>& given,
                          const std::string& file, const std::string& section,
                          const std::string& kind);
+
+/// The numbers of a list value (white space, commas or semicolons between them): exactly `n` of
+/// them unless n is 0. ConfigError starting with `where` for a non-number or a wrong count.
+std::vector<double> parseNumbers(const std::string& value, std::size_t n, const std::string& where);
+
+/// `v` as the shortest text that reads back as exactly `v` ("0.45", "0.2617993877991494").
+std::string shortestNumber(double v);
 
 /// The closest candidate to `word` by edit distance, or "" when nothing is close enough.
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);

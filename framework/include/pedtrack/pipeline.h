@@ -7,20 +7,10 @@
 
 #include "pedtrack/outputs.h"
 #include "pedtrack/pipeline_config.h"
+#include "pedtrack/run_options.h"
+#include "pedtrack/stop_request.h"
 
 namespace pedtrack {
-
-struct RunOptions {
-  std::string out_dir;  ///< empty: no files written
-  bool progress = true;
-  long max_frames = -1;  ///< stop after this many frames (<0: all)
-  /// Write point_labels.bin (every point's label, each frame) when the pipeline has a segmenter.
-  bool point_labels = true;
-  /// Non-empty: every frame the source produced is also written to this MRPT rawlog (--record).
-  std::string record;
-  /// Frames a live source may have waiting for the stages; beyond it the oldest is dropped.
-  std::size_t live_queue = 2;
-};
 
 class Pipeline {
  public:
@@ -35,7 +25,7 @@ class Pipeline {
   std::vector<Stage*> stages() const;
 
   /// Set by SIGINT/SIGTERM handlers: the run stops after the current frame and writes outputs.
-  static std::atomic<bool>& stopRequested();
+  static std::atomic<bool>& stopRequested() { return pedtrack::stopRequested(); }
 
  private:
   const PipelineConfig& config_;

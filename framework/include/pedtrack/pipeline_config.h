@@ -50,8 +50,4 @@ class PipelineConfig {
   std::shared_ptr<mrpt::config::CConfigFileMemory> ini;
 };
 
-/// Strips inline comments (" ;" and " #"), expands ${VAR} from the environment. Throws
-/// ConfigError naming file and line for an unset variable.
-std::string preprocessPipelineText(const std::string& text, const std::string& file);
-
 }  // namespace pedtrack

@@ -19,7 +19,9 @@ class CConfigFileBase;
 
 namespace pedtrack {
 
-enum class Category { Sensor, Segmenter, Classifier, Tracker };
+/// Run order in a pipeline: the sensor first, odometry before any classifier or tracker (they
+/// place what they find in the fixed frame the odometry sets); otherwise as the file lists them.
+enum class Category { Sensor, Odometry, Segmenter, Classifier, Tracker };
 const char* toString(Category c);
 
 class Plugin {
@@ -52,11 +54,18 @@ class Sensor : public Plugin {
   virtual bool live() const { return false; }
 };
 
-/// A processing stage: segmenters add clusters, classifiers detections, trackers tracks.
+/// A processing stage: odometry sets the robot's pose, segmenters add clusters, classifiers
+/// detections, trackers tracks.
 class Stage : public Plugin {
  public:
   ~Stage() override;
   virtual void process(Frame& frame) = 0;
+};
+/// Estimates the robot's motion (e.g. by scan matching) and sets the frame's robot and sensor
+/// poses. Runs before every stage that uses them, so no stage ever sees a pose change after it.
+class Odometry : public Stage {
+ public:
+  ~Odometry() override;
 };
 class Segmenter : public Stage {
  public:

@@ -8,6 +8,9 @@ namespace pedtrack {
 std::string trim(const std::string& s);
 /// Splits on white space and commas, dropping empty items.
 std::vector<std::string> splitList(const std::string& s);
+/// The fields of one line of the output contract's CSV files (they never quote): split at
+/// `sep`, each field trimmed, empty ones kept, a carriage return dropped.
+std::vector<std::string> splitFields(const std::string& line, char sep = ',');
 /// The message of an exception in one line: MRPT exceptions carry a multi-line header, location
 /// and call trace around their "Message:" line; other multi-line texts give their last line.
 std::string oneLine(const std::string& what);

@@ -44,13 +44,6 @@ void FeatureGather::gather(const Frame& f, std::vector<double>& rows,
   }
 }
 
-DetectionShape parseDetectionShape(const std::string& s) {
-  if (s == "none") return DetectionShape::None;
-  if (s == "ellipse") return DetectionShape::Ellipse;
-  if (s == "auto") return DetectionShape::Auto;
-  throw ConfigError("unknown detection shape '" + s + "' (auto, none, ellipse)");
-}
-
 namespace {
 bool has(const Frame& f, const char* name) {
   return f.clusterFeatureIndex(name) >= 0;
@@ -92,11 +85,15 @@ void appendDetections(Frame& f, const std::vector<int>& cluster_of,
   }
 }
 
-ParamSpec detectionShapeParam() {
-  return ParamSpec::choice("shape", "auto", {"auto", "none", "ellipse"},
-                           "detection shape: ellipse = torso ellipse fitted to a 2D segment; "
-                           "auto: ellipse for torso-height segments, none for legs and 3D "
-                           "clusters");
+const ParamTable<DetectionShapeParams>& detectionShapeTable() {
+  static const auto t = ParamTable<DetectionShapeParams>().choice(
+      &DetectionShapeParams::shape, "shape",
+      {{"auto", DetectionShape::Auto},
+       {"none", DetectionShape::None},
+       {"ellipse", DetectionShape::Ellipse}},
+      "detection shape: ellipse = torso ellipse fitted to a 2D segment; auto: ellipse for "
+      "torso-height segments, none for legs and 3D clusters");
+  return t;
 }
 
 ScoringClassifier::ScoringClassifier(const std::string& model_path,

@@ -7,7 +7,7 @@
 #include <unordered_set>
 
 #include "pedtrack/errors.h"
-#include "pedtrack/object_table.h"
+#include "pedtrack/eval/object_table.h"
 
 namespace pedtrack::eval {
 

@@ -11,14 +11,15 @@
 #include <sstream>
 
 #include "pedtrack/errors.h"
-#include "pedtrack/pipeline_config.h"
+#include "pedtrack/ini_text.h"
 #include "pedtrack/sim/crowd.h"
 #include "pedtrack/text.h"
+#include "scenario_keys.h"
 
 namespace pedtrack::sim {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+using namespace keys;
 using KeyValues = std::vector<std::pair<std::string, std::string>>;
 
 // "person.10" after "person.9": compare digit runs by value.
@@ -43,55 +44,40 @@ bool naturalLess(const std::string& a, const std::string& b) {
   return a.size() - i < b.size() - j;
 }
 
-MotionLimits limits(const ParamSet& p) {
+MotionLimits limits(const MotionKeys& k) {
   MotionLimits l;
-  l.speed = p.getDouble("speed");
-  l.accel = p.getDouble("accel");
-  l.turn_rate = p.getDouble("turn_rate") * kDeg;
-  l.facing_rate = p.getDouble("facing_rate") * kDeg;
+  l.speed = k.speed;
+  l.accel = k.accel;
+  l.turn_rate = k.turn_rate;
+  l.facing_rate = k.facing_rate;
   return l;
 }
 
-BodySpec body(const ParamSet& p) {
-  BodySpec b;
-  b.alpha = p.getDouble("alpha");
-  b.beta = p.getDouble("beta");
-  b.height = p.getDouble("height");
-  b.arm_swing = p.getDouble("arm_swing") * kDeg;
-  b.step_length = p.getDouble("step_length");
-  b.step_width = p.getDouble("step_width");
-  b.cadence = p.getDouble("cadence");
-  b.leg_radius = p.getDouble("leg_radius");
-  return b;
-}
-
-std::string personScript(const ParamSet& p, unsigned long seed, int id) {
-  const std::string path = p.getString("path");
-  if (path == "still") return "";
-  if (path == "script") {
-    if (p.getString("script").empty())
-      throw ConfigError(p.where("script") + ": path = script needs a motion script");
-    return p.getString("script");
+std::string personScript(const PersonKeys& k, const ParamSet& p, unsigned long seed, int id) {
+  const auto& t = personTable();
+  if (k.path == "still") return "";
+  if (k.path == "script") {
+    if (k.script.empty())
+      throw ConfigError(t.where(p, &PersonKeys::script) + ": path = script needs a motion script");
+    return k.script;
   }
-  if (path == "waypoints") {
-    const auto v = p.getNumbers("waypoints", 0);
+  if (k.path == "waypoints") {
+    const auto v = parseNumbers(k.waypoints, 0, t.where(p, &PersonKeys::waypoints));
     if (v.empty() || v.size() % 2)
-      throw ConfigError(p.where("waypoints") + ": expected pairs 'x y; x y; ...'");
+      throw ConfigError(t.where(p, &PersonKeys::waypoints) + ": expected pairs 'x y; x y; ...'");
     std::ostringstream os;
     os.precision(10);
     for (std::size_t i = 0; i < v.size(); i += 2)
       os << (i ? "; " : "") << "goto " << v[i] << " " << v[i + 1];
     return os.str();
   }
-  if (path == "random") {
-    const double x = p.getDouble("x"), y = p.getDouble("y");
-    std::vector<double> a{x - 3, y - 3, x + 3, y + 3};
-    if (!p.getString("area").empty()) a = p.getNumbers("area", 4);
-    return randomWalkScript(static_cast<unsigned>(seed * 7919 + id), int(p.getInt("legs")), a[0],
-                            a[1], a[2], a[3], 2.0);
+  if (k.path == "random") {
+    std::vector<double> a{k.x - 3, k.y - 3, k.x + 3, k.y + 3};
+    if (!k.area.empty()) a = parseNumbers(k.area, 4, t.where(p, &PersonKeys::area));
+    return randomWalkScript(static_cast<unsigned>(seed * 7919 + id), int(k.legs), a[0], a[1], a[2],
+                            a[3], 2.0);
   }
-  return shapeScript(path, p.getDouble("length"), p.getDouble("radius"), p.getDouble("angle"),
-                     int(p.getInt("repeats")));
+  return shapeScript(k.path, k.length, k.radius, k.angle, int(k.repeats));
 }
 
 // The radius of a round object (pole, bin, tree trunk): `radius`, else its type's default.
@@ -100,7 +86,8 @@ double roundRadius(const std::string& type, double radius) {
   return type == "bin" ? 0.25 : type == "tree" ? 0.15 : 0.05;
 }
 
-void addObject(Scenario& s, const std::string& type, double x, double y, const ParamSet* p,
+// `where` starts the error about a wall without length ("file: [section] key").
+void addObject(Scenario& s, const std::string& type, double x, double y, const std::string& where,
                double x2, double y2, double radius, double height, double yaw, double width,
                double depth, double thickness, double crown) {
   auto h = [&](double def) { return height > 0 ? height : def; };
@@ -108,7 +95,7 @@ void addObject(Scenario& s, const std::string& type, double x, double y, const P
   if (type == "wall") {
     // Split long walls into ≤1 m boxes so ray culling stays tight.
     const double len = std::hypot(x2 - x, y2 - y);
-    if (len < 1e-6) throw ConfigError((p ? p->where("x2") : "") + ": a wall needs two ends");
+    if (len < 1e-6) throw ConfigError(where + ": a wall needs two ends");
     const int n = std::max(1, static_cast<int>(std::ceil(len)));
     const double a = std::atan2(y2 - y, x2 - x);
     for (int i = 0; i < n; ++i) {
@@ -157,11 +144,13 @@ double robotPathDistance(const Trajectory& path, const std::string& type, double
 
 // The [crowd]: random people, placed apart from each other and from the objects, moving by the
 // social force model (default) or by independent random-walk scripts.
-void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
-  const auto a = cr.getNumbers("area", 4);
+void addCrowd(Scenario& s, const ParamSet& p, std::mt19937& rng) {
+  const CrowdKeys cr = crowdTable().read(p);
+  const std::string area_where = crowdTable().where(p, &CrowdKeys::area);
+  const auto a = parseNumbers(cr.area, 4, area_where);
   std::uniform_real_distribution<double> u01(0, 1);
   auto in = [&](double lo, double hi) { return lo + (hi - lo) * u01(rng); };
-  const bool social = cr.getString("model") == "social_force";
+  const bool social = cr.model == "social_force";
   std::vector<CircleObstacle> obstacles;
   for (const Primitive& p : s.objects) {
     Eigen::Vector3d c;
@@ -176,7 +165,7 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
   }
   std::vector<CrowdAgent> agents;
   std::vector<PersonSpec> people;
-  for (long i = 0; i < cr.getInt("count"); ++i) {
+  for (long i = 0; i < cr.count; ++i) {
     PersonSpec ps;
     ps.id = static_cast<int>(s.people.size() + people.size()) + 1;
     ps.body.alpha = in(0.17, 0.24);
@@ -184,14 +173,14 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
     ps.body.height = in(1.55, 1.92);
     ps.body.step_length = in(0.55, 0.75);
     // Children draw only when the scenario has them: scenarios without keep their numbers.
-    if (cr.getDouble("child_share") > 0 && u01(rng) < cr.getDouble("child_share")) {
+    if (cr.child_share > 0 && u01(rng) < cr.child_share) {
       ps.body.height = in(1.0, 1.45);
       ps.body.alpha = in(0.13, 0.17);
       ps.body.beta = in(0.08, 0.11);
       ps.body.step_length = in(0.40, 0.55);
     }
     CrowdAgent ag;
-    ag.speed = in(cr.getDouble("speed_min"), cr.getDouble("speed_max"));
+    ag.speed = in(cr.speed_min, cr.speed_max);
     ag.radius = ps.body.alpha + 0.05;
     // Start clear of everyone and everything (a few hundred tries, then anywhere).
     for (int tries = 0; tries < 500; ++tries) {
@@ -207,18 +196,16 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
     if (!social) {
       MotionLimits lim;
       lim.speed = ag.speed;
-      lim.facing_rate = cr.getDouble("facing_rate") * kDeg;
-      const std::string script =
-          randomWalkScript(static_cast<unsigned>(rng()), int(cr.getInt("legs")), a[0], a[1], a[2],
-                           a[3], cr.getDouble("max_stop"));
-      ps.path = Trajectory::fromScript(script, ag.x, ag.y, ag.yaw, lim, cr.where("area"));
+      lim.facing_rate = cr.facing_rate;
+      const std::string script = randomWalkScript(static_cast<unsigned>(rng()), int(cr.legs), a[0],
+                                                  a[1], a[2], a[3], cr.max_stop);
+      ps.path = Trajectory::fromScript(script, ag.x, ag.y, ag.yaw, lim, area_where);
     }
     agents.push_back(ag);
     people.push_back(std::move(ps));
   }
   if (social) {
-    const CrowdArea area{
-        a[0], a[1], a[2], a[3], cr.getDouble("max_stop"), cr.getDouble("facing_rate") * kDeg};
+    const CrowdArea area{a[0], a[1], a[2], a[3], cr.max_stop, cr.facing_rate};
     auto paths = simulateCrowd(agents, obstacles, &s.robot.path, s.duration, area, rng);
     for (std::size_t i = 0; i < people.size(); ++i) people[i].path = std::move(paths[i]);
   }
@@ -229,7 +216,7 @@ void addCrowd(Scenario& s, const ParamSet& cr, std::mt19937& rng) {
 
 Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
                           long seed_override) {
-  const std::string text = preprocessPipelineText(raw_text, file);
+  const std::string text = preprocessIniText(raw_text, file);
   mrpt::config::CConfigFileMemory ini(text);
   std::vector<std::string> sections;
   ini.getAllSections(sections);
@@ -279,93 +266,96 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
 
   Scenario s;
   s.file = file;
-  const ParamSet& sc = section("scenario");
-  s.name = sc.getString("name").empty() ? std::filesystem::path(file).stem().string()
-                                        : sc.getString("name");
-  s.description = sc.getString("description");
-  s.duration = sc.getDouble("duration");
-  s.start_time = sc.getDouble("start_time");
+  const ParamSet& sc_set = section("scenario");
+  const ScenarioKeys sc = scenarioTable().read(sc_set);
+  s.name = sc.name.empty() ? std::filesystem::path(file).stem().string() : sc.name;
+  s.description = sc.description;
+  s.duration = sc.duration;
+  s.start_time = sc.start_time;
   s.seed = seed_override >= 0 ? static_cast<unsigned long>(seed_override)
-                              : static_cast<unsigned long>(sc.getInt("seed"));
+                              : static_cast<unsigned long>(sc.seed);
 
   // Sensor: datasheet defaults, then what the file overrides.
-  const ParamSet& se = section("sensor");
-  s.sensor = sensorDefaults(se.getString("model"));
-  if (se.getDouble("fov") > 0) s.sensor.fov = se.getDouble("fov") * kDeg;
-  if (se.getDouble("resolution") > 0) s.sensor.resolution = se.getDouble("resolution") * kDeg;
-  if (se.getDouble("max_range") > 0) s.sensor.max_range = se.getDouble("max_range");
-  if (se.getDouble("min_range") >= 0) s.sensor.min_range = se.getDouble("min_range");
-  if (se.getDouble("rate") > 0) s.sensor.rate = se.getDouble("rate");
-  if (se.getDouble("range_noise") >= 0) s.sensor.range_noise = se.getDouble("range_noise");
-  s.sensor.dropout = se.getDouble("dropout");
-  if (!se.getString("label").empty()) s.sensor.label = se.getString("label");
-  s.sensor.sweep_motion = se.getBool("sweep_motion");
-  for (const char* k : {"fov", "resolution"})
-    if (s.sensor.is3d && se.getDouble(k) > 0)
-      throw ConfigError(se.where(k) + ": the VLP-16's geometry is fixed (for 2D models only)");
+  const ParamSet& se_set = section("sensor");
+  const SensorKeys se = sensorTable().read(se_set);
+  auto sensorWhere = [&](auto member) { return sensorTable().where(se_set, member); };
+  s.sensor = sensorDefaults(se.model);
+  if (se.fov > 0) s.sensor.fov = se.fov;
+  if (se.resolution > 0) s.sensor.resolution = se.resolution;
+  if (se.max_range > 0) s.sensor.max_range = se.max_range;
+  if (se.min_range >= 0) s.sensor.min_range = se.min_range;
+  if (se.rate > 0) s.sensor.rate = se.rate;
+  if (se.range_noise >= 0) s.sensor.range_noise = se.range_noise;
+  s.sensor.dropout = se.dropout;
+  if (!se.label.empty()) s.sensor.label = se.label;
+  s.sensor.sweep_motion = se.sweep_motion;
+  for (double SensorKeys::*k : {&SensorKeys::fov, &SensorKeys::resolution})
+    if (s.sensor.is3d && se.*k > 0)
+      throw ConfigError(sensorWhere(k) + ": the VLP-16's geometry is fixed (for 2D models only)");
   // The simulated VLP-16 turns at 10 Hz (1800 columns of 0.2°); other rates change its columns.
   if (s.sensor.is3d && std::abs(s.sensor.rate - 10) > 1e-9)
-    throw ConfigError(se.where("rate") + ": the simulated VLP-16 runs at 10 Hz only");
-  for (const char* k : {"fov", "resolution", "max_range", "rate"})
-    if (s.sensor.model == "custom2d" && se.getDouble(k) <= 0)
-      throw ConfigError(se.where(k) + ": required (> 0) for model custom2d");
-  s.sensor.mount = mrpt::poses::CPose3D(se.getDouble("x"), se.getDouble("y"), se.getDouble("z"),
-                                        se.getDouble("yaw") * kDeg, se.getDouble("pitch") * kDeg,
-                                        se.getDouble("roll") * kDeg);
+    throw ConfigError(sensorWhere(&SensorKeys::rate) + ": the simulated VLP-16 runs at 10 Hz only");
+  for (double SensorKeys::*k :
+       {&SensorKeys::fov, &SensorKeys::resolution, &SensorKeys::max_range, &SensorKeys::rate})
+    if (s.sensor.model == "custom2d" && se.*k <= 0)
+      throw ConfigError(sensorWhere(k) + ": required (> 0) for model custom2d");
+  s.sensor.mount = mrpt::poses::CPose3D(se.x, se.y, se.z, se.yaw, se.pitch, se.roll);
   // Truth legs at a leg-height 2D scanner's plane; a torso-height one scans above the hips.
-  const bool leg_scanner = !s.sensor.is3d && se.getDouble("z") <= 0.7;
-  s.leg_height = sc.getDouble("leg_height") >= 0 ? sc.getDouble("leg_height")
-                 : leg_scanner                   ? se.getDouble("z")
-                                                 : 0.4;
+  const bool leg_scanner = !s.sensor.is3d && se.z <= 0.7;
+  s.leg_height = sc.leg_height >= 0 ? sc.leg_height : leg_scanner ? se.z : 0.4;
 
-  const ParamSet& ro = section("robot");
-  s.robot.path =
-      Trajectory::fromScript(ro.getString("script"), ro.getDouble("x"), ro.getDouble("y"),
-                             ro.getDouble("yaw") * kDeg, limits(ro), ro.where("script"));
-  s.robot.odometry_noise = ro.getDouble("odometry_noise");
-  s.robot.odometry_yaw_noise = ro.getDouble("odometry_yaw_noise");
-  s.robot.odometry_yaw_drift = ro.getDouble("odometry_yaw_drift");
+  const ParamSet& ro_set = section("robot");
+  const RobotKeys ro = robotTable().read(ro_set);
+  s.robot.path = Trajectory::fromScript(ro.script, ro.x, ro.y, ro.yaw, limits(ro.motion),
+                                        robotTable().where(ro_set, &RobotKeys::script));
+  s.robot.odometry_noise = ro.odometry_noise;
+  s.robot.odometry_yaw_noise = ro.odometry_yaw_noise;
+  s.robot.odometry_yaw_drift = ro.odometry_yaw_drift;
 
-  const ParamSet& gr = section("ground");
-  s.ground = Ground(gr.getDouble("tilt") * kDeg, gr.getDouble("direction") * kDeg);
+  const GroundKeys gr = groundTable().read(section("ground"));
+  s.ground = Ground(gr.tilt, gr.direction);
 
   for (const auto& [sec, p] : people) {
+    const PersonKeys k = personTable().read(p);
     PersonSpec ps;
     ps.id = static_cast<int>(s.people.size()) + 1;
-    ps.body = body(p);
-    ps.appear = p.getDouble("appear");
-    ps.path = Trajectory::fromScript(personScript(p, s.seed, ps.id), p.getDouble("x"),
-                                     p.getDouble("y"), p.getDouble("yaw") * kDeg, limits(p),
-                                     p.where(p.getString("path") == "script" ? "script" : "path"));
+    ps.body = k.body;
+    ps.appear = k.appear;
+    ps.path = Trajectory::fromScript(
+        personScript(k, p, s.seed, ps.id), k.x, k.y, k.yaw, limits(k.motion),
+        personTable().where(p, k.path == "script" ? &PersonKeys::script : &PersonKeys::path));
     s.people.push_back(std::move(ps));
   }
 
   std::mt19937 rng(static_cast<unsigned>(s.seed));
   std::uniform_real_distribution<double> u01(0, 1);
-  for (const auto& [sec, p] : objects)
-    addObject(s, p.getString("type"), p.getDouble("x"), p.getDouble("y"), &p, p.getDouble("x2"),
-              p.getDouble("y2"), p.getDouble("radius"), p.getDouble("height"),
-              p.getDouble("yaw") * kDeg, p.getDouble("width"), p.getDouble("depth"),
-              p.getDouble("thickness"), p.getDouble("crown"));
+  for (const auto& [sec, p] : objects) {
+    const ObjectKeys o = objectTable().read(p);
+    addObject(s, o.type, o.x, o.y, objectTable().where(p, &ObjectKeys::x2), o.x2, o.y2, o.radius,
+              o.height, o.yaw, o.width, o.depth, o.thickness, o.crown);
+  }
   if (single.count("clutter")) {
-    const ParamSet& cl = single.at("clutter");
-    const auto a = cl.getNumbers("area", 4);
-    const auto types = cl.getList("types");
+    const ParamSet& cl_set = single.at("clutter");
+    const ClutterKeys cl = clutterTable().read(cl_set);
+    const std::string types_where = clutterTable().where(cl_set, &ClutterKeys::types);
+    const auto a = parseNumbers(cl.area, 4, clutterTable().where(cl_set, &ClutterKeys::area));
+    const auto types = splitList(cl.types);
     for (const auto& t : types)
       if (t != "pole" && t != "box" && t != "bin" && t != "tree" && t != "wall")
-        throw ConfigError(cl.where("types") + ": unknown object type '" + t + "'");
-    if (types.empty()) throw ConfigError(cl.where("types") + ": empty");
+        throw ConfigError(types_where + ": unknown object type '" + t + "'");
+    if (types.empty()) throw ConfigError(types_where + ": empty");
     std::vector<double> heights;
-    if (!cl.getString("heights").empty()) {
-      heights = cl.getNumbers("heights", 2);
+    if (!cl.heights.empty()) {
+      const std::string heights_where = clutterTable().where(cl_set, &ClutterKeys::heights);
+      heights = parseNumbers(cl.heights, 2, heights_where);
       if (!(0 < heights[0] && heights[0] <= heights[1]))
-        throw ConfigError(cl.where("heights") + ": need 0 < min <= max");
+        throw ConfigError(heights_where + ": need 0 < min <= max");
     }
-    const double clearance = cl.getDouble("robot_clearance");
+    const double clearance = cl.robot_clearance;
     // Objects in the robot's way are drawn again from a stream of their own, so the main
     // stream (the other objects, the crowd) is the same as without robot_clearance.
     std::mt19937 redraw(static_cast<unsigned>(s.seed) ^ 0x9e3779b9u);
-    for (long i = 0; i < cl.getInt("count"); ++i) {
+    for (long i = 0; i < cl.count; ++i) {
       const std::string& t =
           types[static_cast<std::size_t>(u01(rng) * types.size()) % types.size()];
       double x = a[0] + (a[2] - a[0]) * u01(rng);
@@ -384,8 +374,8 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
         x = a[0] + (a[2] - a[0]) * u01(redraw);
         y = a[1] + (a[3] - a[1]) * u01(redraw);
       }
-      addObject(s, t, x, y, &cl, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw), radius, height, yaw,
-                width, depth, 0.15, crown);
+      addObject(s, t, x, y, types_where, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw), radius,
+                height, yaw, width, depth, 0.15, crown);
     }
   }
   if (single.count("crowd")) addCrowd(s, single.at("crowd"), rng);

@@ -165,7 +165,8 @@ int RayTable::columnRanges(double azimuth, double half_width, int out[4]) const 
   return k;
 }
 
-ObservationMaker::ObservationMaker(const SensorSpec& spec) : spec_(spec) {}
+ObservationMaker::ObservationMaker(const SensorSpec& spec, unsigned long seed)
+    : spec_(spec), reflectivity_(seed) {}
 
 mrpt::obs::CObservation::Ptr ObservationMaker::make(const RangeImage& img, double t,
                                                     std::mt19937_64& rng,
@@ -258,7 +259,7 @@ mrpt::obs::CObservation::Ptr ObservationMaker::makeVelodyne(const RangeImage& im
           if (u > 0 && u < 65535 && decoded >= spec_.min_range && decoded <= spec_.max_range) {
             units = static_cast<uint16_t>(u);
             const int owner = img.owner[i];
-            intensity = owner == kOwnerGround ? 15 : owner < 0 ? 90 : 40;
+            intensity = reflectivity_.of(owner);
             recordReturn(owner, truth);
           }
         }

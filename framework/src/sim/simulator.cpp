@@ -29,7 +29,11 @@ GroundPlane groundInRobotFrame(const Ground& g, const mrpt::poses::CPose3D& robo
 }  // namespace
 
 Simulator::Simulator(Scenario scenario)
-    : s_(std::move(scenario)), rays_(s_.sensor), caster_(rays_), maker_(s_.sensor), rng_(s_.seed) {
+    : s_(std::move(scenario)),
+      rays_(s_.sensor),
+      caster_(rays_),
+      maker_(s_.sensor, s_.seed),
+      rng_(s_.seed) {
   frames_ = static_cast<std::size_t>(std::floor(s_.duration * s_.sensor.rate + 1e-9));
   gaits_.resize(s_.people.size());
 }

@@ -68,7 +68,7 @@ ImmTorsoEstimator::ImmTorsoEstimator(std::shared_ptr<const ImmContext> ctx, cons
   g.x = Eigen::VectorXd::Zero(6);
   const Eigen::Vector2d to_sensor = cloud.origin - position;
   g.x << position.x(), position.y(), std::atan2(to_sensor.y(), to_sensor.x()), 0, p.cog_alpha,
-      p.cog_beta;
+      p.observation.cog_beta;
   // The first model (in the tracker's order) that measures the full shape sets it; else the
   // first that measures a position sets that.
   bool have_position = false;
@@ -123,7 +123,7 @@ void ImmTorsoEstimator::update(const ShapeCloud& cloud, std::mt19937& rng) {
     if (p.models[j] == ShapeModel::Cog) {
       // P1 §II-D: the COG model does not estimate the size; it keeps P1's fixed semi-axes.
       g.x(4) = p.cog_alpha;
-      g.x(5) = p.cog_beta;
+      g.x(5) = p.observation.cog_beta;
     }
     g.x(4) = std::max(g.x(4), 0.01);
     g.x(5) = std::max(g.x(5), 0.01);

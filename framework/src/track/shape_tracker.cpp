@@ -57,7 +57,7 @@ std::vector<ShapeTracker::Candidate> ShapeTracker::candidates(const Frame& f) co
     } else {
       cand.cloud.points.emplace_back(d.x, d.y);  // a detection without points: its position
     }
-    cand.position = fit::centroidBehindSurface(cand.cloud.points, origin, p_.cog_beta);
+    cand.position = fit::centroidBehindSurface(cand.cloud.points, origin, p_.observation.cog_beta);
     out.push_back(std::move(cand));
   }
   return out;

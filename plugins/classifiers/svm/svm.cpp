@@ -6,6 +6,7 @@
 
 #include "pedtrack/classify/cluster_scoring.h"
 #include "pedtrack/classify/model_file.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 
 namespace pedtrack::svmplugin {
@@ -13,9 +14,27 @@ namespace {
 
 using namespace pedtrack::classify;
 
+struct SvmParams {
+  std::string model;
+  double threshold = 0.5;  // calibrated person probability
+  DetectionShapeParams output;
+};
+
+const ParamTable<SvmParams>& table() {
+  using P = SvmParams;
+  static const auto t =
+      ParamTable<P>()
+          .inputFile(&P::model, "model", "SVM model file (`pedtrack train svm`; models/*.yml)")
+          .real(&P::threshold, "threshold", "", 0, 1,
+                "a cluster whose calibrated person probability is ≥ this is a detection")
+          .include(&P::output, detectionShapeTable());
+  return t;
+}
+
 class Svm : public ScoringClassifier {
  public:
-  explicit Svm(const PluginContext& ctx) : Svm(ctx, loadSvmModel(ctx.params.getString("model"))) {}
+  explicit Svm(const PluginContext& ctx) : Svm(table().read(ctx.params)) {}
+  explicit Svm(const SvmParams& p) : Svm(p, loadSvmModel(p.model)) {}
 
  protected:
   void score(const double* rows, std::size_t n, std::vector<double>& out) override {
@@ -23,10 +42,8 @@ class Svm : public ScoringClassifier {
   }
 
  private:
-  Svm(const PluginContext& ctx, LoadedSvm m)
-      : ScoringClassifier(ctx.params.getString("model"), m.svm->features(),
-                          ctx.params.getDouble("threshold"),
-                          parseDetectionShape(ctx.params.getString("shape"))),
+  Svm(const SvmParams& p, LoadedSvm m)
+      : ScoringClassifier(p.model, m.svm->features(), p.threshold, p.output.shape),
         svm_(std::move(m.svm)) {}
   std::unique_ptr<SvmClassifier> svm_;
 };
@@ -35,12 +52,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Classifier;
   d.doc = "RBF SVM person classifier (P4) with a calibrated probability";
-  d.params = {
-      ParamSpec::inputFile("model", "SVM model file (`pedtrack train svm`; models/*.yml)"),
-      ParamSpec::real("threshold", 0.5, "", 0, 1,
-                      "a cluster whose calibrated person probability is ≥ this is a detection"),
-      detectionShapeParam(),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<Svm>(ctx);
   };

@@ -3,11 +3,11 @@
 // circle's), with the segment's features plus `leg_radius` and `leg_residual`; a leg that
 // several scanners of the frame saw becomes one cluster (seg::mergeLegs), and legs are paired
 // into person candidates (Cluster::pair).
-#include "pedtrack/seg/leg_circles.h"
-
 #include <algorithm>
 
+#include "leg_circles/leg_detection.h"
 #include "pedtrack/errors.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/seg/cluster_features.h"
 #include "pedtrack/seg/scan_segments.h"
@@ -15,20 +15,45 @@
 namespace pedtrack::legcircles {
 namespace {
 
+struct LegCirclesParams {
+  seg::LegParams leg;           // P3 eq. 1's bounds and the acceptance tests (leg_detection.h)
+  double pair_distance = 0.8;   // m: legs at most this far apart may be one person's
+  double merge_distance = 0.1;  // m: one leg seen by several scanners; 0: never merged
+};
+
+const ParamTable<LegCirclesParams>& table() {
+  using P = LegCirclesParams;
+  using L = seg::LegParams;
+  static const auto t =
+      ParamTable<P>()
+          .real(path(&P::leg, &L::r_min), "min_radius", "m", 0, 1, "smallest leg radius (P3: 0.03)")
+          .real(path(&P::leg, &L::r_max), "max_radius", "m", 0.001, 1,
+                "largest leg radius (P3: 0.07)")
+          .real(path(&P::leg, &L::max_residual), "max_residual", "m", 0, 1,
+                "segments whose points lie farther from the circle (RMS) are not legs")
+          .integer(path(&P::leg, &L::min_points), "min_points", "", 3, 100000,
+                   "segments with fewer points are not legs (P3: 3)")
+          .boolean(path(&P::leg, &L::require_convex), "require_convex",
+                   "reject arcs whose circle centre is nearer the sensor than their points "
+                   "(concave toward it); P3 has no such test")
+          .real(&P::pair_distance, "pair_distance", "m", 0, 10,
+                "two legs whose centres are at most this far apart may pair into a person")
+          .real(&P::merge_distance, "merge_distance", "m", 0, 1,
+                "legs of different scans (several scanners) whose centres are closer than this "
+                "are one leg, refitted on all their points; 0: never merged");
+  return t;
+}
+
 class LegCircles : public Segmenter {
  public:
-  explicit LegCircles(const PluginContext& ctx)
-      : pair_distance_(ctx.params.getDouble("pair_distance")),
-        merge_distance_(ctx.params.getDouble("merge_distance")) {
-    p_.r_min = ctx.params.getDouble("min_radius");
-    p_.r_max = ctx.params.getDouble("max_radius");
-    p_.max_residual = ctx.params.getDouble("max_residual");
-    p_.min_points = int(ctx.params.getInt("min_points"));
-    p_.require_convex = ctx.params.getBool("require_convex");
+  explicit LegCircles(const PluginContext& ctx) : LegCircles(table().read(ctx.params)) {
     if (p_.r_max < p_.r_min)
-      throw ConfigError("max_radius: " + ctx.params.getString("max_radius") +
-                        " is below min_radius " + ctx.params.getString("min_radius"));
+      throw ConfigError(
+          table().where(ctx.params, path(&LegCirclesParams::leg, &seg::LegParams::r_max)) + ": " +
+          shortestNumber(p_.r_max) + " is below min_radius " + shortestNumber(p_.r_min));
   }
+  explicit LegCircles(const LegCirclesParams& p)
+      : p_(p.leg), pair_distance_(p.pair_distance), merge_distance_(p.merge_distance) {}
 
   void process(Frame& f) override {
     const auto& c = f.cloud();
@@ -119,23 +144,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Segmenter;
   d.doc = "Leg circles (P3 eq. 1) on 2D segments, paired into person candidates";
-  const seg::LegParams def;
-  d.params = {
-      ParamSpec::real("min_radius", def.r_min, "m", 0, 1, "smallest leg radius (P3: 0.03)"),
-      ParamSpec::real("max_radius", def.r_max, "m", 0.001, 1, "largest leg radius (P3: 0.07)"),
-      ParamSpec::real("max_residual", def.max_residual, "m", 0, 1,
-                      "segments whose points lie farther from the circle (RMS) are not legs"),
-      ParamSpec::integer("min_points", def.min_points, "", 3, 100000,
-                         "segments with fewer points are not legs (P3: 3)"),
-      ParamSpec::boolean("require_convex", def.require_convex,
-                         "reject arcs whose circle centre is nearer the sensor than their points "
-                         "(concave toward it); P3 has no such test"),
-      ParamSpec::real("pair_distance", 0.8, "m", 0, 10,
-                      "two legs whose centres are at most this far apart may pair into a person"),
-      ParamSpec::real("merge_distance", 0.1, "m", 0, 1,
-                      "legs of different scans (several scanners) whose centres are closer than "
-                      "this are one leg, refitted on all their points; 0: never merged"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<LegCircles>(ctx);
   };

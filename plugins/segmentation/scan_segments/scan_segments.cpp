@@ -5,23 +5,36 @@
 
 #include <cmath>
 
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/seg/cluster_features.h"
 
 namespace pedtrack::scansegments {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+const ParamTable<seg::SegmentParams>& table() {
+  using P = seg::SegmentParams;
+  static const auto t =
+      ParamTable<P>()
+          .real(&P::gap, "gap", "m", 0.001, 10,
+                "consecutive returns farther apart start a new segment")
+          .integer(&P::max_missing, "max_missing", "", -1, 100000,
+                   ">= 0: more beams than this without a return between two returns also start "
+                   "a new segment (a discontinuity: those beams saw past both); -1: only the gap "
+                   "counts")
+          .integer(&P::min_points, "min_points", "", 1, 100000, "shorter segments are dropped")
+          .real(&P::adaptive_angle, "adaptive_angle", "deg", 0, 89,
+                "> 0: the gap grows with range as an adaptive breakpoint detector (Borges & "
+                "Aldon 2004) with this incidence angle; 0: a fixed gap",
+                kDegree);
+  return t;
+}
 
 class ScanSegments : public Segmenter {
  public:
   explicit ScanSegments(const PluginContext& ctx)
-      : names_(std::make_shared<const std::vector<std::string>>(seg::segmentFeatureNames())) {
-    p_.gap = ctx.params.getDouble("gap");
-    p_.min_points = int(ctx.params.getInt("min_points"));
-    p_.adaptive_angle = ctx.params.getDouble("adaptive_angle") * kDeg;
-    p_.max_missing = int(ctx.params.getInt("max_missing"));
-  }
+      : p_(table().read(ctx.params)),
+        names_(std::make_shared<const std::vector<std::string>>(seg::segmentFeatureNames())) {}
 
   void process(Frame& f) override {
     f.clusters.clear();
@@ -63,7 +76,7 @@ class ScanSegments : public Segmenter {
   }
 
  private:
-  seg::SegmentParams p_;
+  const seg::SegmentParams p_;
   std::shared_ptr<const std::vector<std::string>> names_;
 };
 
@@ -71,18 +84,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Segmenter;
   d.doc = "2D scan segments (P4 s2.1) with torso/leg features, ellipse and circle fits";
-  d.params = {
-      ParamSpec::real("gap", 0.13, "m", 0.001, 10,
-                      "consecutive returns farther apart start a new segment"),
-      ParamSpec::integer("max_missing", 1, "", -1, 100000,
-                         ">= 0: more beams than this without a return between two returns also "
-                         "start a new segment (a discontinuity: those beams saw past both); -1: "
-                         "only the gap counts"),
-      ParamSpec::integer("min_points", 3, "", 1, 100000, "shorter segments are dropped"),
-      ParamSpec::real("adaptive_angle", 0, "deg", 0, 89,
-                      "> 0: the gap grows with range as an adaptive breakpoint detector "
-                      "(Borges & Aldon 2004) with this incidence angle; 0: a fixed gap"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<ScanSegments>(ctx);
   };

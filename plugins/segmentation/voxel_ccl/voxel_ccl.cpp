@@ -1,14 +1,14 @@
 // `voxel_ccl`: P2 §3.2's segmentation — the remaining points voxelised in the ground-aligned
 // frame, 6/18/26-connected components labelled, small ones dropped, and each cluster described
 // by P2's [h, w, d, v, λ, ρ] with its centroid and extent.
-#include "pedtrack/seg/voxel_ccl.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/seg/cluster_features.h"
+#include "voxel_ccl/voxel_labelling.h"
 
 namespace pedtrack::voxelccl {
 namespace {
@@ -19,19 +19,54 @@ int floorInt(double x) {
   return i - (x < i);
 }
 
+struct VoxelCclParams {
+  double voxel = 0.10;                      // m, horizontal side
+  double voxel_height = 0;                  // m, vertical side; 0: voxel
+  bool p2_grid = false;                     // P2's 64 x 50 x 100 image in front of the sensor
+  double max_range = 30;                    // m (range grid)
+  double min_height = 0, max_height = 2.2;  // m above the ground (range grid)
+  seg::Connectivity connectivity = seg::Connectivity::TwentySix;
+  long min_points = 5;
+};
+
+const ParamTable<VoxelCclParams>& table() {
+  using P = VoxelCclParams;
+  static const auto t =
+      ParamTable<P>()
+          .real(&P::voxel, "voxel", "m", 0.01, 5, "horizontal voxel side (P2: 10 cm)")
+          .real(&P::voxel_height, "voxel_height", "m", 0, 10,
+                "vertical voxel side (0: the same as voxel, P2's cubes)")
+          .choice(&P::p2_grid, "grid", {{"range", false}, {"p2", true}},
+                  "range: every point within max_range and the height band; p2: P2's "
+                  "64 x 50 x 100-voxel image in front of the sensor (6.4 x 5 x 10 m at 10 cm)")
+          .real(&P::max_range, "max_range", "m", 0.1, 1000,
+                "grid = range: farthest horizontal distance from the sensor")
+          .real(&P::min_height, "min_height", "m", -100, 100,
+                "grid = range: lowest height above the ground plane (robot-frame z without a "
+                "ground stage)")
+          .real(&P::max_height, "max_height", "m", -100, 100, "grid = range: highest height")
+          .choice(&P::connectivity, "connectivity",
+                  {{"6", seg::Connectivity::Six},
+                   {"18", seg::Connectivity::Eighteen},
+                   {"26", seg::Connectivity::TwentySix}},
+                  "voxel neighbourhood: faces (6), + edges (18), + corners (26)")
+          .integer(&P::min_points, "min_points", "", 1, 1000000,
+                   "components with fewer points are dropped (left unclustered)");
+  return t;
+}
+
 class VoxelCcl : public Segmenter {
  public:
-  explicit VoxelCcl(const PluginContext& ctx)
-      : voxel_(ctx.params.getDouble("voxel")),
-        voxel_h_(ctx.params.getDouble("voxel_height") > 0 ? ctx.params.getDouble("voxel_height")
-                                                          : voxel_),
-        p2_grid_(ctx.params.getString("grid") == "p2"),
-        max_range_(ctx.params.getDouble("max_range")),
-        min_h_(ctx.params.getDouble("min_height")),
-        max_h_(ctx.params.getDouble("max_height")),
-        min_points_(std::size_t(ctx.params.getInt("min_points"))),
-        connectivity_(
-            static_cast<seg::Connectivity>(std::stoi(ctx.params.getString("connectivity")))),
+  explicit VoxelCcl(const PluginContext& ctx) : VoxelCcl(table().read(ctx.params)) {}
+  explicit VoxelCcl(const VoxelCclParams& p)
+      : voxel_(p.voxel),
+        voxel_h_(p.voxel_height > 0 ? p.voxel_height : voxel_),
+        p2_grid_(p.p2_grid),
+        max_range_(p.max_range),
+        min_h_(p.min_height),
+        max_h_(p.max_height),
+        min_points_(std::size_t(p.min_points)),
+        connectivity_(p.connectivity),
         names_(std::make_shared<const std::vector<std::string>>(seg::p2FeatureNames())) {}
 
   void process(Frame& f) override {
@@ -128,25 +163,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Segmenter;
   d.doc = "Voxel connected components (P2 s3.2) with P2's features [h, w, d, v, lambda, rho]";
-  d.params = {
-      ParamSpec::real("voxel", 0.10, "m", 0.01, 5, "horizontal voxel side (P2: 10 cm)"),
-      ParamSpec::real("voxel_height", 0, "m", 0, 10,
-                      "vertical voxel side (0: the same as voxel, P2's cubes)"),
-      ParamSpec::choice(
-          "grid", "range", {"range", "p2"},
-          "range: every point within max_range and the height band; p2: P2's "
-          "64 x 50 x 100-voxel image in front of the sensor (6.4 x 5 x 10 m at 10 cm)"),
-      ParamSpec::real("max_range", 30, "m", 0.1, 1000,
-                      "grid = range: farthest horizontal distance from the sensor"),
-      ParamSpec::real("min_height", 0, "m", -100, 100,
-                      "grid = range: lowest height above the ground plane (robot-frame z without "
-                      "a ground stage)"),
-      ParamSpec::real("max_height", 2.2, "m", -100, 100, "grid = range: highest height"),
-      ParamSpec::choice("connectivity", "26", {"6", "18", "26"},
-                        "voxel neighbourhood: faces (6), + edges (18), + corners (26)"),
-      ParamSpec::integer("min_points", 5, "", 1, 1000000,
-                         "components with fewer points are dropped (left unclustered)"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<VoxelCcl>(ctx);
   };

@@ -25,8 +25,9 @@
 #include "bounded_tcp_socket.h"
 #include "device_timed_hokuyo.h"
 #include "pedtrack/errors.h"
-#include "pedtrack/pipeline.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
+#include "pedtrack/stop_request.h"
 #include "pedtrack/text.h"
 
 namespace pedtrack::mrpt_sensor {
@@ -74,17 +75,56 @@ std::string text(double v) {
   return o.str();
 }
 
+struct MrptSensorParams {
+  std::string driver;          // an MRPT CGenericSensor class name
+  double idle_timeout = 10.0;  // s
+  bool end_on_idle = false;
+  bool reconnect = true;
+  double reconnect_after = 2.0;  // s
+  double reconnect_delay = 0.5;  // s
+  long max_reconnects = 10;
+};
+
+const ParamTable<MrptSensorParams>& table() {
+  using P = MrptSensorParams;
+  static const auto t =
+      ParamTable<P>()
+          .text(&P::driver, "driver",
+                "MRPT sensor class, as in rawlog-grabber (CHokuyoURG, CVelodyneScanner, ...)")
+          .required()
+          .real(&P::idle_timeout, "idle_timeout", "s", 0, 3600,
+                "fail (or end, see end_on_idle) after this long without range data; 0: wait "
+                "forever")
+          .boolean(&P::end_on_idle, "end_on_idle",
+                   "treat idle_timeout or a stopped driver as the end of the stream (file "
+                   "inputs, e.g. pcap_input)")
+          .boolean(&P::reconnect, "reconnect",
+                   "live devices: a driver that throws, reports an error or stalls is counted "
+                   "and re-created instead of ending the run")
+          .real(&P::reconnect_after, "reconnect_after", "s", 0, 3600,
+                "re-create a live driver that gave no range data for this long; 0: only when "
+                "it throws")
+          .real(&P::reconnect_delay, "reconnect_delay", "s", 0, 60,
+                "wait between dropping a failed driver and creating a new one")
+          .integer(&P::max_reconnects, "max_reconnects", "", 0, 1000000,
+                   "re-creations in a row without range data before the stream fails (or ends, "
+                   "see end_on_idle); 0: no limit");
+  return t;
+}
+
 class MrptSensorSource : public Sensor {
  public:
   explicit MrptSensorSource(const PluginContext& ctx)
-      : driver_(ctx.params.getString("driver")),
+      : MrptSensorSource(ctx, table().read(ctx.params)) {}
+  MrptSensorSource(const PluginContext& ctx, const MrptSensorParams& p)
+      : driver_(p.driver),
         section_(ctx.section),
-        idle_timeout_(ctx.params.getDouble("idle_timeout")),
-        end_on_idle_(ctx.params.getBool("end_on_idle")),
-        reconnect_(ctx.params.getBool("reconnect")),
-        reconnect_after_(ctx.params.getDouble("reconnect_after")),
-        reconnect_delay_(ctx.params.getDouble("reconnect_delay")),
-        max_reconnects_(ctx.params.getInt("max_reconnects")) {
+        idle_timeout_(p.idle_timeout),
+        end_on_idle_(p.end_on_idle),
+        reconnect_(p.reconnect),
+        reconnect_after_(p.reconnect_after),
+        reconnect_delay_(p.reconnect_delay),
+        max_reconnects_(p.max_reconnects) {
     // A copy of the configuration the driver reads: a reconnection configures a new driver from
     // it, whatever becomes of the pipeline's.
     std::vector<std::string> sections, keys;
@@ -119,7 +159,7 @@ class MrptSensorSource : public Sensor {
     while (queue_.empty()) {
       // Asked to stop (SIGINT/SIGTERM): a live run's reading thread must not wait on a quiet
       // device for idle_timeout.
-      if (live_ && Pipeline::stopRequested()) return false;
+      if (live_ && stopRequested()) return false;
       // A driver that stopped (device lost for good, or the end of a pcap/file input) ends the
       // stream once everything it produced has been handed out.
       if (stopped_) {
@@ -312,28 +352,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Sensor;
   d.doc = "Live data from any MRPT sensor driver (CGenericSensor), configured with MRPT's keys";
-  d.params = {
-      ParamSpec::text(
-          "driver", std::nullopt,
-          "MRPT sensor class, as in rawlog-grabber (CHokuyoURG, CVelodyneScanner, ...)"),
-      ParamSpec::real(
-          "idle_timeout", 10.0, "s", 0, 3600,
-          "fail (or end, see end_on_idle) after this long without range data; 0: wait forever"),
-      ParamSpec::boolean("end_on_idle", false,
-                         "treat idle_timeout or a stopped driver as the end of the stream (file "
-                         "inputs, e.g. pcap_input)"),
-      ParamSpec::boolean("reconnect", true,
-                         "live devices: a driver that throws, reports an error or stalls is "
-                         "counted and re-created instead of ending the run"),
-      ParamSpec::real("reconnect_after", 2.0, "s", 0, 3600,
-                      "re-create a live driver that gave no range data for this long; 0: only "
-                      "when it throws"),
-      ParamSpec::real("reconnect_delay", 0.5, "s", 0, 60,
-                      "wait between dropping a failed driver and creating a new one"),
-      ParamSpec::integer("max_reconnects", 10, "", 0, 1000000,
-                         "re-creations in a row without range data before the stream fails (or "
-                         "ends, see end_on_idle); 0: no limit"),
-  };
+  d.params = table().specs();
   d.accepts_other_keys = true;  // everything else is the driver's own MRPT configuration
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<MrptSensorSource>(ctx);

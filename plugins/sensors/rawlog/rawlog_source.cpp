@@ -25,15 +25,37 @@ namespace {
 
 using namespace mrpt::obs;
 
+struct RawlogParams {
+  std::string file;
+  ReplayRateParams rate;
+  std::string sensor_label;  // comma list; empty: every range sensor
+  bool skip_bad = false;
+};
+
+const ParamTable<RawlogParams>& table() {
+  using P = RawlogParams;
+  static const auto t =
+      ParamTable<P>()
+          .inputFile(&P::file, "file", "the rawlog to replay")
+          .include(&P::rate, replayRateTable())
+          .text(&P::sensor_label, "sensor_label",
+                "only observations with these sensor labels (comma list; empty: all range "
+                "sensors)")
+          .boolean(&P::skip_bad, "skip_bad",
+                   "skip unreadable entries with a warning instead of stopping with an error");
+  return t;
+}
+
 class RawlogSource : public Sensor {
  public:
-  explicit RawlogSource(const PluginContext& ctx)
-      : file_(ctx.params.getString("file")),
+  explicit RawlogSource(const PluginContext& ctx) : RawlogSource(table().read(ctx.params)) {}
+  explicit RawlogSource(const RawlogParams& p)
+      : file_(p.file),
         stream_(file_),
         archive_(mrpt::serialization::archiveFrom(stream_)),
-        realtime_(ctx.params.getString("rate") == "realtime"),
-        skip_bad_(ctx.params.getBool("skip_bad")),
-        labels_(ctx.params.getList("sensor_label")),
+        realtime_(p.rate.realtime),
+        skip_bad_(p.skip_bad),
+        labels_(splitList(p.sensor_label)),
         file_size_(std::filesystem::file_size(file_)),
         gz_(isGz(file_)) {}
 
@@ -171,17 +193,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Sensor;
   d.doc = "Replays an MRPT rawlog (.rawlog, gz or plain; observations or sensory-frame format)";
-  d.params = {
-      ParamSpec::inputFile("file", "the rawlog to replay"),
-      ParamSpec::choice("rate", "max", {"max", "realtime"},
-                        "max: as fast as the pipeline runs; realtime: paced by the timestamps"),
-      ParamSpec::text(
-          "sensor_label", std::string(),
-          "only observations with these sensor labels (comma list; empty: all range sensors)"),
-      ParamSpec::boolean(
-          "skip_bad", false,
-          "skip unreadable entries with a warning instead of stopping with an error"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<RawlogSource>(ctx);
   };

@@ -156,4 +156,21 @@ bool BagPoses::lookup(const std::string& sensor_frame, const std::string& topic,
   return robot_known_;
 }
 
+const ParamTable<RobotFrameParams>& robotFrameTable() {
+  using P = RobotFrameParams;
+  static const auto t =
+      ParamTable<P>()
+          .text(&P::fixed_frame, "fixed_frame", "tf frame tracking happens in (odom, map, ...)")
+          .text(&P::base_frame, "base_frame", "tf frame of the robot body")
+          .text(&P::mounts, "mounts",
+                "mounting poses on base_frame of topics /tf does not place: 'topic: x y z "
+                "yaw_deg [pitch_deg [roll_deg]]' (m, deg), entries separated by ';' written "
+                "right after a number (' ;' starts an INI comment)")
+          .real(&P::merge_window, "merge_window", "s", 0, 10,
+                "several topics: consecutive messages of distinct topics whose stamps span at "
+                "most this make one frame (below one scan period: 0.1 for 10 Hz scanners); 0: "
+                "one message per frame");
+  return t;
+}
+
 }  // namespace pedtrack::rosbag_source

@@ -12,9 +12,20 @@
 #include <utility>
 #include <vector>
 
+#include "pedtrack/param_table.h"
 #include "pedtrack/text.h"
 
 namespace pedtrack::rosbag_source {
+
+/// Where a ROS source finds its robot and sensors: the keys the bag source and the live topic
+/// source (ros_topic) both declare.
+struct RobotFrameParams {
+  std::string fixed_frame = "odom";      ///< tf frame tracking happens in
+  std::string base_frame = "base_link";  ///< tf frame of the robot body
+  std::string mounts;                    ///< mounting poses of sensors /tf does not place
+  double merge_window = 0.1;             ///< s: messages of several topics within it are a frame
+};
+const ParamTable<RobotFrameParams>& robotFrameTable();
 
 /// A tf transform as an MRPT pose.
 mrpt::poses::CPose3D toPose(const geometry_msgs::TransformStamped& t);

@@ -29,31 +29,56 @@ namespace {
 const std::string kLaserScan = "sensor_msgs/LaserScan";
 const std::string kPointCloud2 = "sensor_msgs/PointCloud2";
 
+struct RosbagParams {
+  std::string file;
+  std::string topic;  // comma list; empty: the bag's only scan topic
+  RobotFrameParams frames;
+  std::string odom_topic = "/odom";  // nav_msgs/Odometry where tf has no fixed→base link
+  ReplayRateParams rate;
+};
+
+const ParamTable<RosbagParams>& table() {
+  using P = RosbagParams;
+  static const auto t =
+      ParamTable<P>()
+          .inputFile(&P::file, "file", "the .bag to replay")
+          .text(&P::topic, "topic",
+                "topics to replay (comma list; several are merged, see merge_window); empty: the "
+                "bag's only LaserScan/PointCloud2 topic")
+          .include(&P::frames, robotFrameTable())
+          .text(&P::odom_topic, "odom_topic",
+                "nav_msgs/Odometry topic used when tf has no fixed_frame→base_frame link; empty: "
+                "none")
+          .include(&P::rate, replayRateTable());
+  return t;
+}
+
 class RosbagSource : public Sensor {
  public:
-  explicit RosbagSource(const PluginContext& ctx)
-      : file_(ctx.params.getString("file")), merge_window_(ctx.params.getDouble("merge_window")) {
+  explicit RosbagSource(const PluginContext& ctx) : RosbagSource(ctx, table().read(ctx.params)) {}
+  RosbagSource(const PluginContext& ctx, const RosbagParams& p)
+      : file_(p.file), merge_window_(p.frames.merge_window) {
+    const std::string mounts_key =
+        table().where(ctx.params, path(&RosbagParams::frames, &RobotFrameParams::mounts));
     try {
       checkBagStructure(file_);  // rosbag_storage trusts the lengths in the file
       bag_.open(file_, rosbag::bagmode::Read);
     } catch (const std::exception& e) {
       throw ConfigError("file: cannot open bag '" + file_ + "': " + oneLine(e.what()));
     }
-    const std::vector<std::string> topics = chooseTopics(ctx.params.getList("topic"));
-    MountTable mounts = parseMounts(ctx.params.getString("mounts"), ctx.params.where("mounts"));
-    checkMountTopics(mounts, usable_, ctx.params.where("mounts"),
-                     "a scan topic of bag '" + file_ + "'");
+    const std::vector<std::string> topics = chooseTopics(splitList(p.topic));
+    MountTable mounts = parseMounts(p.frames.mounts, mounts_key);
+    checkMountTopics(mounts, usable_, mounts_key, "a scan topic of bag '" + file_ + "'");
     // One scanner's own frame is a fine robot frame; several need their mounts to line up.
     try {
-      poses_ = std::make_unique<BagPoses>(
-          bag_, ctx.params.getString("fixed_frame"), ctx.params.getString("base_frame"),
-          ctx.params.getString("odom_topic"), std::move(mounts), topics.size() > 1);
+      poses_ = std::make_unique<BagPoses>(bag_, p.frames.fixed_frame, p.frames.base_frame,
+                                          p.odom_topic, std::move(mounts), topics.size() > 1);
     } catch (const ConfigError&) {
       throw;
     } catch (const std::exception& e) {  // a /tf or odometry message that cannot be read
       throw DataError(file_ + ": reading /tf and odometry: " + oneLine(e.what()));
     }
-    realtime_ = ctx.params.getString("rate") == "realtime";
+    realtime_ = p.rate.realtime;
     view_ = std::make_unique<rosbag::View>(bag_, rosbag::TopicQuery(topics));
     total_ = view_->size();
     it_ = view_->begin();
@@ -191,29 +216,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Sensor;
   d.doc = "Replays LaserScan / PointCloud2 topics of a ROS1 bag, robot pose from /tf and odometry";
-  d.params = {
-      ParamSpec::inputFile("file", "the .bag to replay"),
-      ParamSpec::text(
-          "topic", std::string(),
-          "topics to replay (comma list; several are merged, see merge_window); empty: the "
-          "bag's only LaserScan/PointCloud2 topic"),
-      ParamSpec::text("fixed_frame", std::string("odom"),
-                      "tf frame tracking happens in (odom, map, ...)"),
-      ParamSpec::text("base_frame", std::string("base_link"), "tf frame of the robot body"),
-      ParamSpec::text(
-          "odom_topic", std::string("/odom"),
-          "nav_msgs/Odometry topic used when tf has no fixed_frame→base_frame link; empty: none"),
-      ParamSpec::choice("rate", "max", {"max", "realtime"},
-                        "max: as fast as the pipeline runs; realtime: paced by the header stamps"),
-      ParamSpec::real("merge_window", 0.1, "s", 0, 10,
-                      "several topics: consecutive messages of distinct topics whose stamps span "
-                      "at most this make one frame (below one scan period: 0.1 for 10 Hz "
-                      "scanners); 0: one message per frame"),
-      ParamSpec::text("mounts", std::string(),
-                      "mounting poses on base_frame of topics /tf does not place: 'topic: x y z "
-                      "yaw_deg [pitch_deg [roll_deg]]' (m, deg), entries separated by ';' written "
-                      "right after a number (' ;' starts an INI comment)"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<RosbagSource>(ctx);
   };

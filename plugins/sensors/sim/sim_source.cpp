@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/replay_pacer.h"
 #include "pedtrack/sim/simulator.h"
@@ -18,17 +19,48 @@ sim::Scenario withDuration(sim::Scenario s, double duration) {
   return s;
 }
 
+struct SimParams {
+  std::string scenario;
+  long seed = -1;       // -1: the scenario's own
+  double duration = 0;  // s, 0: the scenario's own
+  ReplayRateParams rate;
+  std::string truth = "auto";  // auto (truth.csv in --out), none, or a path
+  bool point_truth = true;
+  bool odometry = true;
+};
+
+const ParamTable<SimParams>& table() {
+  using P = SimParams;
+  static const auto t =
+      ParamTable<P>()
+          .inputFile(&P::scenario, "scenario", "scenario file (configs/scenarios/*.ini)")
+          .integer(&P::seed, "seed", "", -1, 4294967295.0,
+                   "random seed (-1: the scenario's own [scenario] seed)")
+          .real(&P::duration, "duration", "s", 0, 36000,
+                "simulated time (0: the scenario's own [scenario] duration)")
+          .include(&P::rate, replayRateTable())
+          .text(&P::truth, "truth",
+                "ground truth CSV: auto = truth.csv in the run's --out, none, or a path")
+          .boolean(&P::point_truth, "point_truth",
+                   "also write truth_points.bin (what each return hit) next to the truth CSV")
+          .boolean(&P::odometry, "odometry",
+                   "false: the frames carry no robot motion (a robot without wheel odometry: "
+                   "the robot stays at the origin, has_odometry is false); score such runs in "
+                   "the sensor frame (pedtrack eval --frame sensor)");
+  return t;
+}
+
 class SimSource : public Sensor {
  public:
   explicit SimSource(const PluginContext& ctx)
-      : sim_(withDuration(
-            sim::loadScenario(ctx.params.getString("scenario"), ctx.params.getInt("seed")),
-            ctx.params.getDouble("duration"))),
-        realtime_(ctx.params.getString("rate") == "realtime"),
-        truth_key_(ctx.params.getString("truth")),
-        point_truth_(ctx.params.getBool("point_truth")),
-        odometry_(ctx.params.getBool("odometry")),
-        where_(ctx.params.where("truth")) {}
+      : SimSource(table().read(ctx.params), table().where(ctx.params, &SimParams::truth)) {}
+  SimSource(const SimParams& p, std::string truth_where)
+      : sim_(withDuration(sim::loadScenario(p.scenario, p.seed), p.duration)),
+        realtime_(p.rate.realtime),
+        truth_key_(p.truth),
+        point_truth_(p.point_truth),
+        odometry_(p.odometry),
+        where_(std::move(truth_where)) {}
 
   void finish() override {
     if (truth_) truth_->close();
@@ -96,24 +128,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Sensor;
   d.doc = "Simulates a scenario (people, objects, 2D Hokuyo or VLP-16) and yields its scans";
-  d.params = {
-      ParamSpec::inputFile("scenario", "scenario file (configs/scenarios/*.ini)"),
-      ParamSpec::integer("seed", -1, "", -1, 4294967295.0,
-                         "random seed (-1: the scenario's own [scenario] seed)"),
-      ParamSpec::real("duration", 0, "s", 0, 36000,
-                      "simulated time (0: the scenario's own [scenario] duration)"),
-      ParamSpec::choice("rate", "max", {"max", "realtime"},
-                        "max: as fast as the pipeline runs; realtime: at the sensor's rate"),
-      ParamSpec::text("truth", std::string("auto"),
-                      "ground truth CSV: auto = truth.csv in the run's --out, none, or a path"),
-      ParamSpec::boolean(
-          "point_truth", true,
-          "also write truth_points.bin (what each return hit) next to the truth CSV"),
-      ParamSpec::boolean("odometry", true,
-                         "false: the frames carry no robot motion (a robot without wheel "
-                         "odometry: the robot stays at the origin, has_odometry is false); score "
-                         "such runs in the sensor frame (pedtrack eval --frame sensor)"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<SimSource>(ctx);
   };

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/track/gnn.h"
 #include "pedtrack/track/kalman.h"
@@ -30,21 +31,58 @@ struct MotionTrack {
   int cluster = -1;
 };
 
+struct EkfMotionParams {
+  double q_person = 0.5;      // P2's Q_P
+  double q_min = 0.0;         // P2's Q_min
+  double max_distance = 1.0;  // m, association gate
+  double sigma = 0.1;         // m, detection position noise
+  double q_theta = 1.0;       // rad²/s, heading random walk
+  double q_v = 0.5;           // m²/s³, speed random walk
+  double max_speed = 3.0;     // m/s, cap of finite-difference speeds
+  int max_misses = 0;         // P2 deletes an unassociated track at once
+  bool report_tentative = false;
+};
+
+const ParamTable<EkfMotionParams>& table() {
+  using P = EkfMotionParams;
+  static const auto t =
+      ParamTable<P>()
+          .real(&P::q_person, "q_person", "", 0, 1,
+                "Q_P: detections scoring at least this are persons (start and feed tracks)")
+          .real(&P::q_min, "q_min", "", 0, 1,
+                "Q_min: an established track also takes detections scoring above this")
+          .real(&P::max_distance, "max_distance", "m", 0.01, 20,
+                "association gate: largest distance from a track's prediction")
+          .real(&P::sigma, "sigma", "m", 1e-4, 10,
+                "detection position noise (standard deviation of x and y)")
+          .real(&P::q_theta, "q_theta", "rad^2/s", 0, 1e4,
+                "heading random-walk rate (process noise of theta)")
+          .real(&P::q_v, "q_v", "m^2/s^3", 0, 1e4, "speed random-walk rate (process noise of v)")
+          .real(&P::max_speed, "max_speed", "m/s", 0.1, 50,
+                "finite-difference speeds are capped here (a pedestrian's top speed)")
+          .integer(&P::max_misses, "max_misses", "", 0, 1000,
+                   "frames an established track survives without association (P2: 0)")
+          .boolean(&P::report_tentative, "report_tentative",
+                   "also write the one-step tracks of T to tracks.csv (status tentative)");
+  return t;
+}
+
 class EkfMotion : public Tracker {
  public:
-  explicit EkfMotion(const PluginContext& ctx)
-      : model_(ctx.params.getDouble("q_theta"), ctx.params.getDouble("q_v")) {
-    const ParamSet& p = ctx.params;
-    gate_.q_person = p.getDouble("q_person");
-    gate_.q_min = p.getDouble("q_min");
+  explicit EkfMotion(const PluginContext& ctx) : EkfMotion(table().read(ctx.params)) {
     if (gate_.q_min > gate_.q_person)
-      throw ConfigError(p.where("q_min") + ": must not exceed q_person (" +
-                        std::to_string(gate_.q_person) + ")");
-    max_distance_ = p.getDouble("max_distance");
-    sigma_ = p.getDouble("sigma");
-    max_speed_ = p.getDouble("max_speed");
-    max_misses_ = int(p.getInt("max_misses"));
-    report_tentative_ = p.getBool("report_tentative");
+      throw ConfigError(table().where(ctx.params, &EkfMotionParams::q_min) +
+                        ": must not exceed q_person (" + std::to_string(gate_.q_person) + ")");
+  }
+  explicit EkfMotion(const EkfMotionParams& p)
+      : model_(p.q_theta, p.q_v),
+        max_distance_(p.max_distance),
+        sigma_(p.sigma),
+        max_speed_(p.max_speed),
+        max_misses_(p.max_misses),
+        report_tentative_(p.report_tentative) {
+    gate_.q_person = p.q_person;
+    gate_.q_min = p.q_min;
   }
 
   void process(Frame& f) override {
@@ -171,9 +209,9 @@ class EkfMotion : public Tracker {
 
   Unicycle model_;
   ScoreHysteresis gate_;
-  double max_distance_ = 1, sigma_ = 0.1, max_speed_ = 3;
-  int max_misses_ = 0;
-  bool report_tentative_ = false;
+  double max_distance_, sigma_, max_speed_;
+  int max_misses_;
+  bool report_tentative_;
   FrameClock clock_;
   TrackIds ids_;
   std::vector<MotionTrack> tracks_;
@@ -185,25 +223,7 @@ PluginDescriptor describe() {
   d.doc =
       "P2's motion classifier: one-step tracks promoted to EKF tracks [x,y,theta,v], Q "
       "hysteresis";
-  d.params = {
-      ParamSpec::real("q_person", 0.5, "", 0, 1,
-                      "Q_P: detections scoring at least this are persons (start and feed tracks)"),
-      ParamSpec::real("q_min", 0.0, "", 0, 1,
-                      "Q_min: an established track also takes detections scoring above this"),
-      ParamSpec::real("max_distance", 1.0, "m", 0.01, 20,
-                      "association gate: largest distance from a track's prediction"),
-      ParamSpec::real("sigma", 0.1, "m", 1e-4, 10,
-                      "detection position noise (standard deviation of x and y)"),
-      ParamSpec::real("q_theta", 1.0, "rad^2/s", 0, 1e4,
-                      "heading random-walk rate (process noise of theta)"),
-      ParamSpec::real("q_v", 0.5, "m^2/s^3", 0, 1e4, "speed random-walk rate (process noise of v)"),
-      ParamSpec::real("max_speed", 3.0, "m/s", 0.1, 50,
-                      "finite-difference speeds are capped here (a pedestrian's top speed)"),
-      ParamSpec::integer("max_misses", 0, "", 0, 1000,
-                         "frames an established track survives without association (P2: 0)"),
-      ParamSpec::boolean("report_tentative", false,
-                         "also write the one-step tracks of T to tracks.csv (status tentative)"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<EkfMotion>(ctx);
   };

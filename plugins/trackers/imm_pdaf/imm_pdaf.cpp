@@ -6,16 +6,17 @@
 #include <memory>
 #include <vector>
 
+#include "imm_pdaf/existence_log.h"
+#include "imm_pdaf/gate.h"
+#include "imm_pdaf/jpda.h"
+#include "imm_pdaf/occlusion.h"
+#include "imm_pdaf/pda.h"
 #include "pedtrack/errors.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
-#include "pedtrack/track/existence_log.h"
-#include "pedtrack/track/gate.h"
 #include "pedtrack/track/imm.h"
-#include "pedtrack/track/jpda.h"
 #include "pedtrack/track/kalman.h"
 #include "pedtrack/track/management.h"
-#include "pedtrack/track/occlusion.h"
-#include "pedtrack/track/pda.h"
 #include "pedtrack/track/tracker_base.h"
 
 namespace pedtrack::immpdaf {
@@ -24,11 +25,62 @@ namespace {
 using namespace pedtrack::track;
 
 struct Settings {
-  double sigma = 0.1, q = 1, p_detect = 0.9, p_detect_occluded = 0.1, p_gate = 0.99;
-  double clutter_density = 0, p_survive = 0.98, p_birth = 0, p_init = 0.2;
-  double init_speed_sigma = 1, min_score = 0, merge_distance = 0.35, surface_offset = 0;
+  double sigma = 0.1;                         // m, a detection's x and y
+  double q = 1;                               // m²/s³, every motion model's acceleration noise
+  std::vector<double> turn_rates{1.4, -1.4};  // rad/s, one constant-turn model each (P4 3.1)
+  std::vector<double> transition{0.95,  0.025, 0.025, 0.025, 0.95,
+                                 0.025, 0.025, 0.025, 0.95};  // P4 3.1, row by row
+  double p_detect = 0.9, p_detect_occluded = 0.1, p_gate = 0.99;
+  double clutter_density = 0;  // 1/m², 0: estimated from each gate (P4 2.3)
+  double p_survive = 0.98, p_birth = 0, p_init = 0.2;
+  double alpha_t = 0.01, beta_t = 0.01;  // P4 eq. 3
+  double init_speed_sigma = 1, min_score = 0, surface_offset = 0, merge_distance = 0.35;
   bool jpda = true, report_tentative = false;
 };
+
+const ParamTable<Settings>& table() {
+  using P = Settings;
+  static const auto t =
+      ParamTable<P>()
+          .real(&P::sigma, "sigma", "m", 1e-4, 10,
+                "measurement noise: standard deviation of a detection's x and y")
+          .real(&P::q, "q", "m^2/s^3", 0, 1e4,
+                "acceleration noise power spectral density of every motion model")
+          .vector(&P::turn_rates, "turn_rates", "rad/s", 0, -20, 20,
+                  "one constant-turn model per rate, after the CV model (P4 3.1)")
+          .vector(&P::transition, "transition", "", 0, 0, 1,
+                  "model transition matrix, row by row, n x n for n models (P4 3.1)")
+          .real(&P::p_detect, "p_detect", "", 0.01, 1,
+                "P_D: probability a visible person is detected")
+          .real(&P::p_detect_occluded, "p_detect_occluded", "", 0, 1,
+                "P_D where a nearer object hides the track's predicted position")
+          .real(&P::p_gate, "p_gate", "", 0.5, 0.999999,
+                "P_G: gate probability (chi-square, 2 dof)")
+          .real(&P::clutter_density, "clutter_density", "1/m^2", 0, 1e6,
+                "false detections per m^2; 0: estimated from each gate (P4 2.3)")
+          .real(&P::p_survive, "p_survive", "", 0, 1,
+                "probability a person still exists after 1 s (P4 eq. 1's P22 per second)")
+          .real(&P::p_birth, "p_birth", "1/s", 0, 1,
+                "rate at which a non-existing track becomes a person (P4 eq. 1's P12)")
+          .real(&P::p_init, "p_init", "", 0, 1, "existence probability of a new track")
+          .real(&P::alpha_t, "alpha_t", "", 1e-9, 0.5,
+                "alpha_T: probability of confirming a false track (P4 eq. 3)")
+          .real(&P::beta_t, "beta_t", "", 1e-9, 0.5,
+                "beta_T: probability of deleting a true track (P4 eq. 3)")
+          .real(&P::init_speed_sigma, "init_speed_sigma", "m/s", 0.01, 10,
+                "standard deviation of a new track's velocity (it starts at rest)")
+          .real(&P::min_score, "min_score", "", 0, 1, "detections scoring below are ignored")
+          .real(&P::surface_offset, "surface_offset", "m", -1, 1,
+                "each detection is moved this far away from the sensor (a scan sees the near "
+                "surface of a body; 0: as detected)")
+          .real(&P::merge_distance, "merge_distance", "m", 0, 5,
+                "two tracks closer than this are one person: the less certain is deleted")
+          .choice(&P::jpda, "association", {{"jpda", true}, {"pda", false}},
+                  "jpda: a detection is at most one track's; pda: each track on its own")
+          .boolean(&P::report_tentative, "report_tentative",
+                   "also write tentative tracks to tracks.csv (existence.csv has them all)");
+  return t;
+}
 
 struct ImmTrack {
   long id = 0;
@@ -37,38 +89,25 @@ struct ImmTrack {
   TrackStatus status = TrackStatus::Tentative;
 };
 
-ExistenceLlr makeLlr(const ParamSet& p) {
+ExistenceLlr makeLlr(const ParamSet& p, const Settings& s) {
   try {
-    return ExistenceLlr(p.getDouble("alpha_t"), p.getDouble("beta_t"));
+    return ExistenceLlr(s.alpha_t, s.beta_t);
   } catch (const std::invalid_argument& e) {
-    throw ConfigError(p.where("alpha_t") + ": " + e.what());
+    throw ConfigError(table().where(p, &Settings::alpha_t) + ": " + e.what());
   }
 }
 
 class ImmPdaf : public Tracker {
  public:
-  explicit ImmPdaf(const PluginContext& ctx) : llr_(makeLlr(ctx.params)) {
+  explicit ImmPdaf(const PluginContext& ctx)
+      : s_(table().read(ctx.params)), llr_(makeLlr(ctx.params, s_)) {
     const ParamSet& p = ctx.params;
-    s_.sigma = p.getDouble("sigma");
-    s_.q = p.getDouble("q");
-    s_.p_detect = p.getDouble("p_detect");
-    s_.p_detect_occluded = p.getDouble("p_detect_occluded");
-    s_.p_gate = p.getDouble("p_gate");
-    s_.clutter_density = p.getDouble("clutter_density");
-    s_.p_survive = p.getDouble("p_survive");
-    s_.p_birth = p.getDouble("p_birth");
-    s_.p_init = p.getDouble("p_init");
-    s_.init_speed_sigma = p.getDouble("init_speed_sigma");
-    s_.min_score = p.getDouble("min_score");
-    s_.surface_offset = p.getDouble("surface_offset");
-    s_.merge_distance = p.getDouble("merge_distance");
-    s_.jpda = p.getString("association") == "jpda";
-    s_.report_tentative = p.getBool("report_tentative");
     if (s_.p_init >= 1 || s_.p_init <= 0)
-      throw ConfigError(p.where("p_init") + ": must lie strictly between 0 and 1");
+      throw ConfigError(table().where(p, &Settings::p_init) +
+                        ": must lie strictly between 0 and 1");
     if (ExistenceLlr::llr(s_.p_init) >= llr_.confirmThreshold() ||
         ExistenceLlr::llr(s_.p_init) <= llr_.deleteThreshold())
-      throw ConfigError(p.where("p_init") + ": a new track's LLR ln(p/(1-p)) = " +
+      throw ConfigError(table().where(p, &Settings::p_init) + ": a new track's LLR ln(p/(1-p)) = " +
                         std::to_string(ExistenceLlr::llr(s_.p_init)) +
                         " must lie between the deletion and confirmation thresholds " +
                         std::to_string(llr_.deleteThreshold()) + " and " +
@@ -76,12 +115,11 @@ class ImmPdaf : public Tracker {
 
     std::vector<std::shared_ptr<const MotionModel>> models{
         std::make_shared<ConstantVelocity>(s_.q)};
-    for (double w : p.getVector("turn_rates"))
-      models.push_back(std::make_shared<CoordinatedTurn>(w, s_.q));
-    const std::vector<double> pi = p.getVector("transition");
+    for (double w : s_.turn_rates) models.push_back(std::make_shared<CoordinatedTurn>(w, s_.q));
+    const std::vector<double>& pi = s_.transition;
     const std::size_t n = models.size();
     if (pi.size() != n * n)
-      throw ConfigError(p.where("transition") + ": " + std::to_string(n) +
+      throw ConfigError(table().where(p, &Settings::transition) + ": " + std::to_string(n) +
                         " models (CV and one per turn rate) need " + std::to_string(n * n) +
                         " numbers (row by row), got " + std::to_string(pi.size()));
     Eigen::MatrixXd T(n, n);
@@ -90,7 +128,7 @@ class ImmPdaf : public Tracker {
     try {
       imm_ = std::make_unique<Imm>(models, T);
     } catch (const std::invalid_argument& e) {
-      throw ConfigError(p.where("transition") + ": " + e.what());
+      throw ConfigError(table().where(p, &Settings::transition) + ": " + e.what());
     }
     meas_ = positionMeasurement(4, s_.sigma);
     gamma_ = gateThreshold(s_.p_gate, 2);
@@ -264,47 +302,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "IMM (CV + constant turns) with PDA/JPDA and existence-LLR track management (P4)";
-  d.params = {
-      ParamSpec::real("sigma", 0.1, "m", 1e-4, 10,
-                      "measurement noise: standard deviation of a detection's x and y"),
-      ParamSpec::real("q", 1.0, "m^2/s^3", 0, 1e4,
-                      "acceleration noise power spectral density of every motion model"),
-      ParamSpec::vector("turn_rates", std::vector<double>{1.4, -1.4}, "rad/s", 0, -20, 20,
-                        "one constant-turn model per rate, after the CV model (P4 3.1)"),
-      ParamSpec::vector(
-          "transition",
-          std::vector<double>{0.95, 0.025, 0.025, 0.025, 0.95, 0.025, 0.025, 0.025, 0.95}, "", 0, 0,
-          1, "model transition matrix, row by row, n x n for n models (P4 3.1)"),
-      ParamSpec::real("p_detect", 0.9, "", 0.01, 1,
-                      "P_D: probability a visible person is detected"),
-      ParamSpec::real("p_detect_occluded", 0.1, "", 0, 1,
-                      "P_D where a nearer object hides the track's predicted position"),
-      ParamSpec::real("p_gate", 0.99, "", 0.5, 0.999999,
-                      "P_G: gate probability (chi-square, 2 dof)"),
-      ParamSpec::real("clutter_density", 0.0, "1/m^2", 0, 1e6,
-                      "false detections per m^2; 0: estimated from each gate (P4 2.3)"),
-      ParamSpec::real("p_survive", 0.98, "", 0, 1,
-                      "probability a person still exists after 1 s (P4 eq. 1's P22 per second)"),
-      ParamSpec::real("p_birth", 0.0, "1/s", 0, 1,
-                      "rate at which a non-existing track becomes a person (P4 eq. 1's P12)"),
-      ParamSpec::real("p_init", 0.2, "", 0, 1, "existence probability of a new track"),
-      ParamSpec::real("alpha_t", 0.01, "", 1e-9, 0.5,
-                      "alpha_T: probability of confirming a false track (P4 eq. 3)"),
-      ParamSpec::real("beta_t", 0.01, "", 1e-9, 0.5,
-                      "beta_T: probability of deleting a true track (P4 eq. 3)"),
-      ParamSpec::real("init_speed_sigma", 1.0, "m/s", 0.01, 10,
-                      "standard deviation of a new track's velocity (it starts at rest)"),
-      ParamSpec::real("min_score", 0.0, "", 0, 1, "detections scoring below are ignored"),
-      ParamSpec::real("surface_offset", 0.0, "m", -1, 1,
-                      "each detection is moved this far away from the sensor (a scan sees the "
-                      "near surface of a body; 0: as detected)"),
-      ParamSpec::real("merge_distance", 0.35, "m", 0, 5,
-                      "two tracks closer than this are one person: the less certain is deleted"),
-      ParamSpec::choice("association", "jpda", {"jpda", "pda"},
-                        "jpda: a detection is at most one track's; pda: each track on its own"),
-      ParamSpec::boolean("report_tentative", false,
-                         "also write tentative tracks to tracks.csv (existence.csv has them all)"),
-  };
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<ImmPdaf>(ctx);
   };

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <memory>
 
-#include "pedtrack/errors.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/track/shape_tracker.h"
 
@@ -16,15 +15,24 @@ namespace {
 
 using namespace pedtrack::track;
 
-// Π from the `transition` key, row by row; rows must sum to 1.
-Eigen::MatrixXd transition(const ParamSet& s) {
-  const std::vector<double> pi = s.getVector("transition");
-  const Eigen::MatrixXd t =
-      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(pi.data());
-  for (int i = 0; i < 3; ++i)
-    if (std::abs(t.row(i).sum() - 1) > 1e-6)
-      throw ConfigError(s.where("transition") + ": row " + std::to_string(i + 1) +
-                        " does not sum to 1");
+// The IMM over the ellipse, box and COG models (ShapeTrackerParams' default models), with Π
+// from the `transition` key, row by row.
+const ParamTable<ShapeTrackerParams>& table() {
+  using P = ShapeTrackerParams;
+  static const auto t =
+      ParamTable<P>()
+          .append(ShapeTracker::commonTable())
+          .append(ShapeTracker::ellipseTable())
+          .append(ShapeTracker::boxTable())
+          .vector(&P::transition, "transition", "", 9, 0, 1,
+                  "Pi (P1 Table I): model switching probabilities, row by row (ellipse, box, "
+                  "cog)")
+          .check(&P::transition, [](const P& p) {
+            for (int i = 0; i < 3; ++i)
+              if (std::abs(p.transition.row(i).sum() - 1) > 1e-6)
+                return "row " + std::to_string(i + 1) + " does not sum to 1";
+            return std::string();
+          });
   return t;
 }
 
@@ -32,17 +40,9 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "P1: IMM over ellipse (RANSAC), bounding-box and point-cloud-COG observation models";
-  d.params = ShapeTracker::commonParams();
-  for (auto group : {ShapeTracker::ellipseParams(), ShapeTracker::boxParams()})
-    d.params.insert(d.params.end(), group.begin(), group.end());
-  d.params.push_back(ParamSpec::vector(
-      "transition", std::vector<double>{0.99, 0.005, 0.005, 0.005, 0.99, 0.005, 0.005, 0.005, 0.99},
-      "", 9, 0, 1,
-      "Pi (P1 Table I): model switching probabilities, row by row (ellipse, box, cog)"));
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
-    return std::make_unique<ShapeTrackerStage>(
-        ctx.params, std::vector<ShapeModel>{ShapeModel::Ellipse, ShapeModel::Box, ShapeModel::Cog},
-        transition(ctx.params));
+    return std::make_unique<ShapeTrackerStage>(table().read(ctx.params));
   };
   return d;
 }

@@ -11,16 +11,23 @@ namespace {
 
 using namespace pedtrack::track;
 
+const ParamTable<ShapeTrackerParams>& table() {
+  static const auto t = ParamTable<ShapeTrackerParams>()
+                            .append(ShapeTracker::commonTable())
+                            .append(ShapeTracker::boxTable());
+  return t;
+}
+
 PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "P0's KF-BB: one EKF on bounding-box observations [x, y, theta, alpha, beta]";
-  d.params = ShapeTracker::commonParams();
-  const auto box = ShapeTracker::boxParams();
-  d.params.insert(d.params.end(), box.begin(), box.end());
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
-    return std::make_unique<ShapeTrackerStage>(ctx.params, std::vector<ShapeModel>{ShapeModel::Box},
-                                               Eigen::MatrixXd::Identity(1, 1));
+    ShapeTrackerParams p = table().read(ctx.params);
+    p.models = {ShapeModel::Box};
+    p.transition = Eigen::MatrixXd::Identity(1, 1);
+    return std::make_unique<ShapeTrackerStage>(std::move(p));
   };
   return d;
 }

@@ -12,16 +12,23 @@ namespace {
 
 using namespace pedtrack::track;
 
+const ParamTable<ShapeTrackerParams>& table() {
+  static const auto t = ParamTable<ShapeTrackerParams>()
+                            .append(ShapeTracker::commonTable())
+                            .append(ShapeTracker::circleTable());
+  return t;
+}
+
 PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "P0's KF-circle: one EKF on RANSAC circle observations [x, y, radius]";
-  d.params = ShapeTracker::commonParams();
-  const auto circle = ShapeTracker::circleParams();
-  d.params.insert(d.params.end(), circle.begin(), circle.end());
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
-    return std::make_unique<ShapeTrackerStage>(
-        ctx.params, std::vector<ShapeModel>{ShapeModel::Circle}, Eigen::MatrixXd::Identity(1, 1));
+    ShapeTrackerParams p = table().read(ctx.params);
+    p.models = {ShapeModel::Circle};
+    p.transition = Eigen::MatrixXd::Identity(1, 1);
+    return std::make_unique<ShapeTrackerStage>(std::move(p));
   };
   return d;
 }

@@ -8,93 +8,215 @@
 #include <memory>
 #include <optional>
 
+#include "leg_people/leg_people_tracker.h"
+#include "leg_people/static_scene.h"
 #include "pedtrack/errors.h"
+#include "pedtrack/ipopt/gait_fit.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/point_labels.h"
-#include "pedtrack/track/gait_fit_ipopt.h"
-#include "pedtrack/track/leg_people_tracker.h"
 #include "pedtrack/track/leg_pose_params.h"
-#include "pedtrack/track/scan_odometry.h"
-#include "pedtrack/track/static_scene.h"
 
 namespace pedtrack::legpeople {
 namespace {
 
 using namespace pedtrack::track;
 
-LegPeopleParams readParams(const ParamSet& s) {
-  LegPeopleParams p;
-  p.pose = readLegPoseParams(s);
-  p.pose.zoning.resolve_swaps = s.getBool("resolve_swaps");
-  if (s.getString("gait_solver") == "ipopt") p.pose.gait_solver = &gait::fitIpopt;
-  p.object_q = s.getDouble("object_q");
-  p.object_sigma = s.getDouble("object_sigma");
-  p.gate = s.getDouble("gate");
-  p.object_max_coast = s.getDouble("object_max_coast");
-  p.leg_score = s.getDouble("leg_score");
-  p.moving_leg_score = s.getDouble("moving_leg_score");
-  p.moving_confirm_travel = s.getDouble("moving_confirm_travel");
-  p.max_confirm_speed = s.getDouble("max_confirm_speed");
-  p.sure_leg_score = s.getDouble("sure_leg_score");
-  p.sure_confirm_travel = s.getDouble("sure_confirm_travel");
-  p.pair_distance = s.getDouble("pair_distance");
-  p.confirm_travel = s.getDouble("confirm_travel");
-  p.confirm_stride = s.getDouble("confirm_stride");
-  p.max_coast = s.getDouble("max_coast");
-  p.lost_velocity_window = s.getDouble("lost_velocity_window");
-  p.max_coast_confirmed = s.getDouble("max_coast_confirmed");
-  p.reacquire_spread = s.getDouble("reacquire_spread");
-  p.reacquire_max = s.getDouble("reacquire_max");
-  p.merge_distance = s.getDouble("merge_distance");
-  p.reidentify_speed = s.getDouble("reidentify_speed");
-  p.reidentify_max = s.getDouble("reidentify_max");
-  p.reidentify_leg_scans = int(s.getInt("reidentify_leg_scans"));
-  p.max_leg_spread = s.getDouble("max_leg_spread");
-  p.flip_speed = s.getDouble("flip_speed");
-  p.flip_time = s.getDouble("flip_time");
-  p.init_speed = s.getDouble("init_speed");
-  p.tentative_accel_var = s.getDouble("tentative_accel_var");
-  p.tentative_sigma_xy = s.getDouble("tentative_sigma_xy");
-  p.report_heading_speed = s.getDouble("report_heading_speed");
-  p.report_heading_window = s.getDouble("report_heading_window");
-  p.support_gate = s.getDouble("support_gate");
-  p.one_leg_stand = s.getDouble("one_leg_stand");
+struct LegPeopleStageParams {
+  LegPeopleParams tracker;  // legs, pairs, confirmation, re-identification, pose
+  bool report_tentative = false;
+  std::string follow = "off";                      // off, nearest or a track id
+  std::vector<double> follow_zone{0.3, 3.0, 1.0};  // x_min x_max half_width, robot frame (m)
+  double static_radius = 0.07;  // m: a leg's circle centre lies a leg radius behind its points
+  double report_coast = 0.5;    // s unseen before a person is no longer written
+  bool static_scene = true;
+  // Cells occupied for a second (not by a confirmed person) are static scene here, not the
+  // grid's general 3 s: a new person must walk to be confirmed anyway, and a moving robot sees
+  // furniture only for seconds.
+  StaticScene::Options scene = [] {
+    StaticScene::Options o;
+    o.persist = 1.0;
+    return o;
+  }();
+};
+
+// The tracker's own keys (leg_people_tracker.h's LegPeopleParams; its pose estimator's keys are
+// P3's, legPoseTable, with leg_people's defaults).
+const ParamTable<LegPeopleParams>& trackerTable() {
+  using T = LegPeopleParams;
+  static const auto t =
+      ParamTable<T>()
+          .real(&T::object_q, "object_q", "m2/s3", 1e-6, 1e6,
+                "constant-velocity noise of a leg or clutter track")
+          .real(&T::object_sigma, "object_sigma", "m", 1e-4, 10, "leg centre noise")
+          .real(&T::gate, "gate", "m", 0.01, 10,
+                "largest distance from a predicted leg to the leg it is associated with")
+          .real(&T::object_max_coast, "object_max_coast", "s", 0, 3600,
+                "a leg or clutter track unseen this long is dropped")
+          .real(&T::leg_score, "leg_score", "", 0, 1,
+                "tracks whose mean classifier score reaches this are legs")
+          .real(&T::moving_leg_score, "moving_leg_score", "", 0, 1,
+                "a track moving at init_speed or more is leg-like from this mean score on "
+                "(far legs score low but walk), and so is one where a confirmed person's "
+                "missing leg is predicted")
+          .real(&T::moving_confirm_travel, "moving_confirm_travel", "m", 0, 100,
+                "a person whose legs' mean score is below leg_score is confirmed once it "
+                "moved this far")
+          .real(&T::sure_leg_score, "sure_leg_score", "", 0, 1,
+                "a person whose legs' mean classifier score reaches this is confirmed after "
+                "sure_confirm_travel (at most confirm_travel; a person standing by the "
+                "robot, shifting their weight); only where a classifier scored the "
+                "legs; 1: off")
+          .real(&T::sure_confirm_travel, "sure_confirm_travel", "m", 0, 100,
+                "see sure_leg_score (legs must still have scissored: confirm_stride)")
+          .real(&T::max_confirm_speed, "max_confirm_speed", "m/s", 0, 100,
+                "no person is confirmed while estimated faster than this (a brisk walk): "
+                "such speeds are mostly a leg jumping to a neighbouring object")
+          .real(&T::pair_distance, "pair_distance", "m", 0, 5,
+                "two legs at most this far apart form a person")
+          .real(&T::confirm_travel, "confirm_travel", "m", 0, 100,
+                "a new person is confirmed (reported) once it moved this far")
+          .real(&T::confirm_stride, "confirm_stride", "m", 0, 10,
+                "... and once its legs scissored: their separation along its motion swung "
+                "over this range (two objects slid together by the robot's motion never "
+                "do); 0: off")
+          .real(
+              &T::lost_velocity_window, "lost_velocity_window", "s", 0, 60,
+              "a confirmed person lost from sight coasts at their centre's mean velocity over the "
+              "last this long they were seen, when slower than their filter's (the last "
+              "leg fits before an occlusion often read a jump); 0: off")
+          .real(&T::max_coast, "max_coast", "s", 0, 3600,
+                "a tentative person with neither leg seen this long is deleted, and a "
+                "confirmed one at the earliest")
+          .real(&T::max_coast_confirmed, "max_coast_confirmed", "s", 0, 3600,
+                "a confirmed person with neither leg seen is deleted after as long as they "
+                "had been seen while confirmed, at most this (at least max_coast): "
+                "a person back from behind others or from outside the view is "
+                "re-identified (reidentify_speed) without a second confirmation")
+          .real(&T::reacquire_spread, "reacquire_spread", "m/s", 0, 100,
+                "while a confirmed person is unseen (occluded in a crowd), the gate in which "
+                "a free leg becomes theirs widens this fast")
+          .real(&T::reacquire_max, "reacquire_max", "m", 0, 10,
+                "... by at most this much beyond leg_gate")
+          .real(&T::reidentify_speed, "reidentify_speed", "m/s", 0, 100,
+                "a confirmed person lost from sight takes back a new leg pair within "
+                "leg_gate plus this speed times their time unseen of where they were "
+                "predicted (keeps their id through occlusions), or a lone leg "
+                "(reidentify_leg_scans); 0: off, both")
+          .real(&T::reidentify_max, "reidentify_max", "m", 0, 100,
+                "... that radius grows by at most this much beyond leg_gate")
+          .integer(&T::reidentify_leg_scans, "reidentify_leg_scans", "scans", 0, 1000,
+                   "a confirmed person with no leg left takes back a lone walking leg "
+                   "(off the static scene, no free leg-like object, furniture included, within "
+                   "pair_distance) within that radius once it has been tracked this many "
+                   "scans; 0: off (pairs only)")
+          .real(&T::merge_distance, "merge_distance", "m", 0, 10,
+                "two people closer than this are one (bodies do not interpenetrate): the "
+                "tentative, else the one seen less recently, else the newer goes; two "
+                "confirmed people only when both are seen; 0: off")
+          .real(&T::max_leg_spread, "max_leg_spread", "m", 0.1, 10,
+                "a person's legs farther apart than this: the outer one is dropped")
+          .real(&T::flip_speed, "flip_speed", "m/s", 0, 100,
+                "walking backwards faster than this for flip_time turns the facing round")
+          .real(&T::flip_time, "flip_time", "s", 0, 3600, "see flip_speed")
+          .real(&T::init_speed, "init_speed", "m/s", 0, 100,
+                "a new person faces their legs' motion above this speed, else the scanner")
+          .real(&T::tentative_accel_var, "tentative_accel_var", "(m/s2)2", 1e-9, 1e9,
+                "variance of a tentative person's X and Y acceleration noise (P3: 100); "
+                "accel_var applies once confirmed. Close to the legs, the filter shows a leg "
+                "jumping to a neighbouring object as a speed no walker has")
+          .real(&T::tentative_sigma_xy, "tentative_sigma_xy", "m", 1e-6, 10,
+                "std. dev. of a tentative person's legs' midpoint measurement (P3: 0.03); "
+                "sigma_xy applies once confirmed")
+          .real(&T::report_heading_speed, "report_heading_speed", "m/s", 0, 100,
+                "the written yaw is the person's direction of motion (the way they moved "
+                "over report_heading_window) whenever that is at least this fast, else the "
+                "last such direction (the pose estimator's orientation until they first "
+                "move; it still predicts the legs). Crowds: heading MAE 49 -> 28 deg. 0: "
+                "the pose estimator's orientation")
+          .real(&T::report_heading_window, "report_heading_window", "s", 0.01, 60,
+                "see report_heading_speed")
+          .real(&T::support_gate, "support_gate", "m", 0, 10,
+                "a confirmed person's leg no leg circle shows is still seen where scan "
+                "returns of no leg circle (one or two beams: far, or all but hidden; many "
+                "that fit no circle: wide trousers) lie within this of where the gait "
+                "predicts it, off the static scene; 0: off")
+          .real(&T::one_leg_stand, "one_leg_stand", "s", 0, 3600,
+                "a confirmed person held up this long by one leg track alone, standing "
+                "(within 0.1 m) on the static scene, or (within 0.25 m) while the scanner "
+                "moved 45 deg or more round it, is a track left on a pole or a table leg: "
+                "that leg track is let go and never a person's leg again (one seen only in "
+                "returns of no circle, support_gate, no longer holds the person up); 0: off")
+          .boolean(path(&T::pose, &LegPoseParams::zoning, &ZoningParams::resolve_swaps),
+                   "resolve_swaps",
+                   "a turn in place of over 90° between two scans is read as the person's "
+                   "legs swapped by the assignment (the nearer perpendicular), not a turn")
+          .include(&T::pose, legPoseTable());
+  return t;
+}
+
+const ParamTable<LegPeopleStageParams>& table() {
+  using P = LegPeopleStageParams;
+  static const auto t =
+      ParamTable<P>()
+          .include(&P::tracker, trackerTable())
+          .real(&P::report_coast, "report_coast", "s", 0, 3600,
+                "a person unseen longer than this is no longer written (kept until "
+                "deleted, max_coast / max_coast_confirmed, so their legs can be "
+                "re-acquired behind an occlusion)")
+          .boolean(&P::report_tentative, "report_tentative", "also write tracks not yet confirmed")
+          .boolean(&P::static_scene, "static_scene",
+                   "no person starts in a cell the local occupancy grid (or the prior map) "
+                   "has seen occupied for static_persist seconds")
+          .real(path(&P::scene, &StaticScene::Options::persist), "static_persist", "s", 0, 3600,
+                "a cell occupied this long (not by a confirmed person) is static scene; "
+                "short, as a new person must walk to be confirmed anyway, and a moving "
+                "robot sees furniture only for seconds")
+          .real(path(&P::scene, &StaticScene::Options::cell), "static_cell", "m", 0.01, 1,
+                "cell size of the static-scene grid")
+          .real(&P::static_radius, "static_radius", "m", 0, 1,
+                "a leg whose circle centre has a static cell this close is on the static "
+                "scene (the centre lies a leg radius behind the points it was fitted to)")
+          .text(path(&P::scene, &StaticScene::Options::prior_map), "prior_map",
+                "optional map of the fixed frame: ROS map.yaml or MRPT .gridmap; its "
+                "occupied cells are static scene")
+          .text(&P::follow, "follow",
+                "person following: off, nearest (the nearest confirmed person in "
+                "follow_zone, re-chosen when lost) or a track id; marked `following`")
+          .vector(&P::follow_zone, "follow_zone", "m", 3, -100, 100,
+                  "x_min x_max half_width of the zone in front of the robot (robot frame)");
+  return t;
+}
+
+// The tracker's parameters with the gait solver the `gait_solver` key chose plugged in.
+LegPeopleParams withGaitSolver(LegPeopleParams p) {
+  gait::useChosenGaitSolver(p.pose);
   return p;
 }
 
 class LegPeople : public Tracker {
  public:
-  explicit LegPeople(const PluginContext& ctx)
-      : tracker_(readParams(ctx.params)),
-        report_tentative_(ctx.params.getBool("report_tentative")),
-        follow_(ctx.params.getString("follow")),
-        follow_zone_(ctx.params.getVector("follow_zone")),
-        static_radius_(ctx.params.getDouble("static_radius")),
-        report_coast_(ctx.params.getDouble("report_coast")),
-        support_(ctx.params.getDouble("support_gate") > 0) {
-    if (ctx.params.getBool("static_scene")) {
-      StaticScene::Options o;
-      o.persist = ctx.params.getDouble("static_persist");
-      o.prior_map = ctx.params.getString("prior_map");
-      o.cell = ctx.params.getDouble("static_cell");
-      scene_.emplace(o);
-    }
-    scan_odometry_ = ctx.params.getString("scan_odometry");
-    if (scan_odometry_ != "off") odometry_.emplace();
+  explicit LegPeople(const PluginContext& ctx) : LegPeople(ctx, table().read(ctx.params)) {}
+
+  LegPeople(const PluginContext& ctx, LegPeopleStageParams p)
+      : tracker_(withGaitSolver(p.tracker)),
+        report_tentative_(p.report_tentative),
+        follow_(p.follow),
+        follow_zone_(p.follow_zone),
+        static_radius_(p.static_radius),
+        report_coast_(p.report_coast),
+        support_(p.tracker.support_gate > 0) {
+    if (p.static_scene) scene_.emplace(p.scene);
     if (follow_ != "off" && follow_ != "nearest") {
       char* end = nullptr;
       follow_id_ = std::strtol(follow_.c_str(), &end, 10);
       if (!end || *end || follow_id_ <= 0)
-        throw ConfigError(ctx.params.where("follow") + ": '" + follow_ +
-                          "' is not off, nearest or a track id");
+        throw ConfigError(table().where(ctx.params, &LegPeopleStageParams::follow) + ": '" +
+                          follow_ + "' is not off, nearest or a track id");
     }
   }
 
   void process(Frame& f) override {
-    // auto: scan matching only for data without odometry, and for good once odometry appears
-    // (mixing the two frames would move every track).
-    if (odometry_ && scan_odometry_ == "auto" && f.has_odometry) odometry_.reset();
-    if (odometry_) useScanOdometry(f);
     std::vector<LegDetection> legs = detections(f);
     std::function<bool(double, double)> is_static;
     if (scene_)
@@ -102,6 +224,11 @@ class LegPeople : public Tracker {
     tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f));
     if (scene_) scene_->update(f, tracker_.occupiedByPeople());
     const auto people = tracker_.people();
+    // For the next frame's stages (scan matching leaves people's returns out): everyone but
+    // those kept only for re-identification.
+    f.people.clear();
+    for (const PersonState& s : people)
+      if (!s.lost) f.people.push_back({s.p.x(), s.p.y()});
     chooseFollowed(f, people);
     for (const PersonState& s : people) {
       if (!s.confirmed && !report_tentative_) continue;
@@ -123,12 +250,7 @@ class LegPeople : public Tracker {
   }
 
   std::vector<std::pair<std::string, long>> counters() const override {
-    std::vector<std::pair<std::string, long>> c{{"objects", long(tracker_.objectCount())}};
-    if (odometry_ && odometry_->matched() + odometry_->rejected() > 0) {
-      c.emplace_back("scan_matches", odometry_->matched());
-      c.emplace_back("scan_matches_rejected", odometry_->rejected());
-    }
-    return c;
+    return {{"objects", long(tracker_.objectCount())}};
   }
 
  private:
@@ -179,54 +301,6 @@ class LegPeople : public Tracker {
     return out;
   }
 
-  // Data without odometry: the robot's motion from matching its scans (all scanners together);
-  // the frame's robot and sensor poses are moved into that odometry frame, so tracks, outputs
-  // and the static scene all live in a frame where walls stand still.
-  void useScanOdometry(Frame& f) {
-    const auto& cloud = f.cloud();
-    // People walk: their returns would drag the match along with them (on a standing scanner in
-    // a room with a few walkers, the estimate wandered 2-4 cm). Points near the people of the
-    // last scan, moved into this robot frame by the last pose, are left out of the match.
-    std::vector<Eigen::Vector2d> people;
-    for (const PersonState& s : tracker_.people()) {
-      if (s.lost) continue;  // kept only for re-identification
-      double x, y, z;
-      last_robot_.inverseComposePoint(s.p.x(), s.p.y(), 0, x, y, z);
-      people.emplace_back(x, y);
-    }
-    std::vector<Eigen::Vector2d> pts;
-    pts.reserve(cloud.size());
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-      if (!f.isKept(i)) continue;  // e.g. the robot's own footprint (height_band)
-      float x, y, z;
-      cloud.getPoint(i, x, y, z);
-      const Eigen::Vector2d q(x, y);
-      if (std::any_of(people.begin(), people.end(),
-                      [&](const Eigen::Vector2d& c) { return (q - c).squaredNorm() < kPersonR2; }))
-        continue;
-      pts.push_back(q);
-    }
-    const mrpt::poses::CPose2D matched = odometry_->update(pts, f.t);
-    // auto: a scanner that has not moved stays exactly where it started. Scan matching jitters
-    // by 2-3 cm on a standing scanner, which blurs the static scene and costs tracks; the
-    // matched pose is used from the moment the robot has clearly moved (and from then on).
-    if (scan_odometry_ == "on" || matched.norm() > kMovedDistance ||
-        std::abs(matched.phi()) > kMovedAngle)
-      moved_ = true;
-    const mrpt::poses::CPose3D ego =
-        moved_ ? mrpt::poses::CPose3D(matched) : mrpt::poses::CPose3D();
-    // The match starts where the robot was at the first scan it could match (with min_points;
-    // before it the frame's own pose stands). With odometry as well (on), the match replaces it
-    // from there: composing the two counted every motion twice.
-    if (!start_ && odometry_->started()) start_ = f.robot_pose;
-    const mrpt::poses::CPose3D robot = start_ ? *start_ + ego : f.robot_pose;
-    const mrpt::poses::CPose3D old_inv = -f.robot_pose;  // sensor poses -> their mounts
-    f.sensor_pose = robot + (old_inv + f.sensor_pose);
-    for (SensorPose& s : f.sensors) s.pose = robot + (old_inv + s.pose);
-    f.robot_pose = robot;
-    last_robot_ = robot;
-  }
-
   // The scanner nearest to a fixed-frame point: with several scanners merged, the one that saw it
   // (the apex of P3 eq. 6's hidden area).
   static Eigen::Vector2d nearestSensor(const Frame& f, const Eigen::Vector2d& p) {
@@ -271,14 +345,6 @@ class LegPeople : public Tracker {
 
   LegPeopleTracker tracker_;
   std::optional<StaticScene> scene_;
-  std::optional<ScanOdometry> odometry_;
-  mrpt::poses::CPose3D last_robot_;  // the last frame's scan-matched robot pose
-  bool moved_ = false;               // scan matching has seen the robot leave where it started
-  std::optional<mrpt::poses::CPose3D> start_;  // the robot pose at the scan odometry's origin
-  // Beyond the matcher's jitter on a standing scanner (2-3 cm, a fraction of a degree).
-  static constexpr double kMovedDistance = 0.1, kMovedAngle = 3.0 * M_PI / 180;
-  static constexpr double kPersonR2 = 0.5 * 0.5;  // m², a person's legs and a step around them
-  std::string scan_odometry_;                     // auto, on or off
   bool report_tentative_;
   std::string follow_;
   long follow_id_ = 0, followed_ = 0;
@@ -293,148 +359,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "People from leg-height scans: leg and clutter tracks, leg pairs, P3 pose per person";
-  const LegPeopleParams def;
-  const StaticScene::Options so;
-  d.params = {
-      ParamSpec::real("object_q", def.object_q, "m2/s3", 1e-6, 1e6,
-                      "constant-velocity noise of a leg or clutter track"),
-      ParamSpec::real("object_sigma", def.object_sigma, "m", 1e-4, 10, "leg centre noise"),
-      ParamSpec::real("gate", def.gate, "m", 0.01, 10,
-                      "largest distance from a predicted leg to the leg it is associated with"),
-      ParamSpec::real("object_max_coast", def.object_max_coast, "s", 0, 3600,
-                      "a leg or clutter track unseen this long is dropped"),
-      ParamSpec::real("leg_score", def.leg_score, "", 0, 1,
-                      "tracks whose mean classifier score reaches this are legs"),
-      ParamSpec::real("moving_leg_score", def.moving_leg_score, "", 0, 1,
-                      "a track moving at init_speed or more is leg-like from this mean score on "
-                      "(far legs score low but walk), and so is one where a confirmed person's "
-                      "missing leg is predicted"),
-      ParamSpec::real("moving_confirm_travel", def.moving_confirm_travel, "m", 0, 100,
-                      "a person whose legs' mean score is below leg_score is confirmed once it "
-                      "moved this far"),
-      ParamSpec::real("sure_leg_score", def.sure_leg_score, "", 0, 1,
-                      "a person whose legs' mean classifier score reaches this is confirmed after "
-                      "sure_confirm_travel (at most confirm_travel; a person standing by the "
-                      "robot, shifting their weight); only where a classifier scored the "
-                      "legs; 1: off"),
-      ParamSpec::real("sure_confirm_travel", def.sure_confirm_travel, "m", 0, 100,
-                      "see sure_leg_score (legs must still have scissored: confirm_stride)"),
-      ParamSpec::real("max_confirm_speed", def.max_confirm_speed, "m/s", 0, 100,
-                      "no person is confirmed while estimated faster than this (a brisk walk): "
-                      "such speeds are mostly a leg jumping to a neighbouring object"),
-      ParamSpec::real("pair_distance", def.pair_distance, "m", 0, 5,
-                      "two legs at most this far apart form a person"),
-      ParamSpec::real("confirm_travel", def.confirm_travel, "m", 0, 100,
-                      "a new person is confirmed (reported) once it moved this far"),
-      ParamSpec::real("confirm_stride", def.confirm_stride, "m", 0, 10,
-                      "... and once its legs scissored: their separation along its motion swung "
-                      "over this range (two objects slid together by the robot's motion never "
-                      "do); 0: off"),
-      ParamSpec::real(
-          "lost_velocity_window", def.lost_velocity_window, "s", 0, 60,
-          "a confirmed person lost from sight coasts at their centre's mean velocity over the "
-          "last this long they were seen, when slower than their filter's (the last "
-          "leg fits before an occlusion often read a jump); 0: off"),
-      ParamSpec::real("max_coast", def.max_coast, "s", 0, 3600,
-                      "a tentative person with neither leg seen this long is deleted, and a "
-                      "confirmed one at the earliest"),
-      ParamSpec::real("max_coast_confirmed", def.max_coast_confirmed, "s", 0, 3600,
-                      "a confirmed person with neither leg seen is deleted after as long as they "
-                      "had been seen while confirmed, at most this (at least max_coast): "
-                      "a person back from behind others or from outside the view is "
-                      "re-identified (reidentify_speed) without a second confirmation"),
-      ParamSpec::real("reacquire_spread", def.reacquire_spread, "m/s", 0, 100,
-                      "while a confirmed person is unseen (occluded in a crowd), the gate in which "
-                      "a free leg becomes theirs widens this fast"),
-      ParamSpec::real("reacquire_max", def.reacquire_max, "m", 0, 10,
-                      "... by at most this much beyond leg_gate"),
-      ParamSpec::real("reidentify_speed", def.reidentify_speed, "m/s", 0, 100,
-                      "a confirmed person lost from sight takes back a new leg pair within "
-                      "leg_gate plus this speed times their time unseen of where they were "
-                      "predicted (keeps their id through occlusions), or a lone leg "
-                      "(reidentify_leg_scans); 0: off, both"),
-      ParamSpec::real("reidentify_max", def.reidentify_max, "m", 0, 100,
-                      "... that radius grows by at most this much beyond leg_gate"),
-      ParamSpec::integer(
-          "reidentify_leg_scans", def.reidentify_leg_scans, "scans", 0, 1000,
-          "a confirmed person with no leg left takes back a lone walking leg "
-          "(off the static scene, no free leg-like object, furniture included, within "
-          "pair_distance) within that radius once it has been tracked this many "
-          "scans; 0: off (pairs only)"),
-      ParamSpec::real("merge_distance", def.merge_distance, "m", 0, 10,
-                      "two people closer than this are one (bodies do not interpenetrate): the "
-                      "tentative, else the one seen less recently, else the newer goes; two "
-                      "confirmed people only when both are seen; 0: off"),
-      ParamSpec::real("max_leg_spread", def.max_leg_spread, "m", 0.1, 10,
-                      "a person's legs farther apart than this: the outer one is dropped"),
-      ParamSpec::real("flip_speed", def.flip_speed, "m/s", 0, 100,
-                      "walking backwards faster than this for flip_time turns the facing round"),
-      ParamSpec::real("flip_time", def.flip_time, "s", 0, 3600, "see flip_speed"),
-      ParamSpec::real("init_speed", def.init_speed, "m/s", 0, 100,
-                      "a new person faces their legs' motion above this speed, else the scanner"),
-      ParamSpec::real("tentative_accel_var", def.tentative_accel_var, "(m/s2)2", 1e-9, 1e9,
-                      "variance of a tentative person's X and Y acceleration noise (P3: 100); "
-                      "accel_var applies once confirmed. Close to the legs, the filter shows a leg "
-                      "jumping to a neighbouring object as a speed no walker has"),
-      ParamSpec::real("tentative_sigma_xy", def.tentative_sigma_xy, "m", 1e-6, 10,
-                      "std. dev. of a tentative person's legs' midpoint measurement (P3: 0.03); "
-                      "sigma_xy applies once confirmed"),
-      ParamSpec::real("report_heading_speed", def.report_heading_speed, "m/s", 0, 100,
-                      "the written yaw is the person's direction of motion (the way they moved "
-                      "over report_heading_window) whenever that is at least this fast, else the "
-                      "last such direction (the pose estimator's orientation until they first "
-                      "move; it still predicts the legs). Crowds: heading MAE 49 -> 28 deg. 0: "
-                      "the pose estimator's orientation"),
-      ParamSpec::real("report_heading_window", def.report_heading_window, "s", 0.01, 60,
-                      "see report_heading_speed"),
-      ParamSpec::choice("scan_odometry", "auto", {"auto", "on", "off"},
-                        "the robot's motion from matching each frame's scans (MRPT ICP against "
-                        "keyframes), tracked in that frame so walls stand still on a robot "
-                        "without odometry (robot poses in outputs become it). auto: only while "
-                        "the source gives no odometry (a bag without /tf or /odom, a lone live "
-                        "scanner), and only once the match has moved 0.1 m or 3 deg from the "
-                        "start (a standing scanner stays exact); on: always; off: never"),
-      ParamSpec::real("report_coast", 0.5, "s", 0, 3600,
-                      "a person unseen longer than this is no longer written (kept until "
-                      "deleted, max_coast / max_coast_confirmed, so their legs can be "
-                      "re-acquired behind an occlusion)"),
-      ParamSpec::real("support_gate", def.support_gate, "m", 0, 10,
-                      "a confirmed person's leg no leg circle shows is still seen where scan "
-                      "returns of no leg circle (one or two beams: far, or all but hidden; many "
-                      "that fit no circle: wide trousers) lie within this of where the gait "
-                      "predicts it, off the static scene; 0: off"),
-      ParamSpec::real("one_leg_stand", def.one_leg_stand, "s", 0, 3600,
-                      "a confirmed person held up this long by one leg track alone, standing "
-                      "(within 0.1 m) on the static scene, or (within 0.25 m) while the scanner "
-                      "moved 45 deg or more round it, is a track left on a pole or a table leg: "
-                      "that leg track is let go and never a person's leg again (one seen only in "
-                      "returns of no circle, support_gate, no longer holds the person up); 0: off"),
-      ParamSpec::boolean("resolve_swaps", true,
-                         "a turn in place of over 90° between two scans is read as the person's "
-                         "legs swapped by the assignment (the nearer perpendicular), not a turn"),
-      ParamSpec::boolean("report_tentative", false, "also write tracks not yet confirmed"),
-      ParamSpec::boolean("static_scene", true,
-                         "no person starts in a cell the local occupancy grid (or the prior map) "
-                         "has seen occupied for static_persist seconds"),
-      ParamSpec::real("static_persist", 1.0, "s", 0, 3600,
-                      "a cell occupied this long (not by a confirmed person) is static scene; "
-                      "short, as a new person must walk to be confirmed anyway, and a moving "
-                      "robot sees furniture only for seconds"),
-      ParamSpec::real("static_cell", so.cell, "m", 0.01, 1, "cell size of the static-scene grid"),
-      ParamSpec::real("static_radius", 0.07, "m", 0, 1,
-                      "a leg whose circle centre has a static cell this close is on the static "
-                      "scene (the centre lies a leg radius behind the points it was fitted to)"),
-      ParamSpec::text("prior_map", std::string(),
-                      "optional map of the fixed frame: ROS map.yaml or MRPT .gridmap; its "
-                      "occupied cells are static scene"),
-      ParamSpec::text("follow", std::string("off"),
-                      "person following: off, nearest (the nearest confirmed person in "
-                      "follow_zone, re-chosen when lost) or a track id; marked `following`"),
-      ParamSpec::vector("follow_zone", std::vector<double>{0.3, 3.0, 1.0}, "m", 3, -100, 100,
-                        "x_min x_max half_width of the zone in front of the robot (robot frame)"),
-  };
-  const auto pose = legPoseParamSpecs(def.pose);
-  d.params.insert(d.params.end(), pose.begin(), pose.end());
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<LegPeople>(ctx);
   };

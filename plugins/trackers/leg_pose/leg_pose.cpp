@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
+#include "pedtrack/ipopt/gait_fit.h"
 #include "pedtrack/plugin.h"
-#include "pedtrack/track/gait_fit_ipopt.h"
 #include "pedtrack/track/leg_pose_params.h"
 #include "pedtrack/track/tracker_base.h"
 
@@ -18,16 +18,49 @@ namespace {
 
 using namespace pedtrack::track;
 
+struct LegPoseStageParams {
+  LegPoseParams pose;            // P3's estimator (leg_pose_params.h)
+  bool from_detections = false;  // a classifier's legs instead of the leg segmenter's circles
+  bool facing_sensor = true;     // the person faces the robot when tracking starts
+  double max_range = 3;          // m, the target is the nearest leg pair within it (P3 §2.2)
+  double lost_time = 1.0;        // s without a leg: the track ends, the nearest pair is taken
+  double occluded_width = 0.07;  // m, narrower leg circles beside a nearer return: partly hidden
+};
+
+const ParamTable<LegPoseStageParams>& table() {
+  using P = LegPoseStageParams;
+  static const auto t =
+      ParamTable<P>()
+          .include(&P::pose, legPoseTable())
+          .choice(&P::from_detections, "legs", {{"clusters", false}, {"detections", true}},
+                  "leg positions: the leg segmenter's circles (P3) or a classifier's legs")
+          .choice(&P::facing_sensor, "initial_facing", {{"sensor", true}, {"away", false}},
+                  "the person faces the robot when tracking starts (P3's frontal following) or "
+                  "faces away (the robot follows behind)")
+          .real(&P::max_range, "max_range", "m", 0.1, 100,
+                "the target is the nearest leg pair within this distance (P3 §2.2)")
+          .real(&P::lost_time, "lost_time", "s", 0, 3600,
+                "no leg of the person for this long: the track ends and the nearest pair is "
+                "acquired again (new id)")
+          .real(&P::occluded_width, "occluded_width", "m", 0, 1,
+                "a leg circle seen narrower than this with something nearer beside it in the "
+                "scan is partly hidden: its heading readings take heading_occluded_sigma_leg as "
+                "its position error (from the segmenter's jump_prev, jump_next and width "
+                "features: scan_segments, leg_circles; without them no leg is marked); 0: off");
+  return t;
+}
+
 class LegPose : public Tracker {
  public:
-  explicit LegPose(const PluginContext& ctx)
-      : params_(readLegPoseParams(ctx.params)),
-        from_detections_(ctx.params.getString("legs") == "detections"),
-        facing_sensor_(ctx.params.getString("initial_facing") == "sensor"),
-        max_range_(ctx.params.getDouble("max_range")),
-        lost_time_(ctx.params.getDouble("lost_time")),
-        occluded_width_(ctx.params.getDouble("occluded_width")) {
-    if (ctx.params.getString("gait_solver") == "ipopt") params_.gait_solver = &gait::fitIpopt;
+  explicit LegPose(const PluginContext& ctx) : LegPose(table().read(ctx.params)) {}
+  explicit LegPose(const LegPoseStageParams& p)
+      : params_(p.pose),
+        from_detections_(p.from_detections),
+        facing_sensor_(p.facing_sensor),
+        max_range_(p.max_range),
+        lost_time_(p.lost_time),
+        occluded_width_(p.occluded_width) {
+    gait::useChosenGaitSolver(params_);
   }
 
   void process(Frame& f) override {
@@ -139,26 +172,7 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "P3: one person's pose [X, Y, theta] from two legs (zoning, gait model, CA KF, eq. 6-7)";
-  d.params = legPoseParamSpecs();
-  const std::vector<ParamSpec> own = {
-      ParamSpec::choice("legs", "clusters", {"clusters", "detections"},
-                        "leg positions: the leg segmenter's circles (P3) or a classifier's legs"),
-      ParamSpec::choice("initial_facing", "sensor", {"sensor", "away"},
-                        "the person faces the robot when tracking starts (P3's frontal "
-                        "following) or faces away (the robot follows behind)"),
-      ParamSpec::real("max_range", 3, "m", 0.1, 100,
-                      "the target is the nearest leg pair within this distance (P3 §2.2)"),
-      ParamSpec::real("lost_time", 1.0, "s", 0, 3600,
-                      "no leg of the person for this long: the track ends and the nearest pair "
-                      "is acquired again (new id)"),
-      ParamSpec::real("occluded_width", 0.07, "m", 0, 1,
-                      "a leg circle seen narrower than this with something nearer beside it in "
-                      "the scan is partly hidden: its heading readings take "
-                      "heading_occluded_sigma_leg as its position error (from the segmenter's "
-                      "jump_prev, jump_next and width features: scan_segments, leg_circles; "
-                      "without them no leg is marked); 0: off"),
-  };
-  d.params.insert(d.params.end(), own.begin(), own.end());
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<LegPose>(ctx);
   };

@@ -6,9 +6,8 @@
 #include <iostream>
 #include <memory>
 
-#include "pedtrack/errors.h"
+#include "mhe_mlesac/mhe_estimator.h"
 #include "pedtrack/plugin.h"
-#include "pedtrack/track/mhe_estimator.h"
 #include "pedtrack/track/shape_tracker.h"
 
 namespace pedtrack::mhemlesac {
@@ -16,102 +15,103 @@ namespace {
 
 using namespace pedtrack::track;
 
-// Eq. 3's s is negative inside the ellipse, so a point of the head, the neck or the hips (which
-// project inside the torso's outline) pulls the fit inwards as hard as a stray point outside
-// pulls it out: the data term must see the torso only. An adult's torso spans the hips (0.53 of
-// the stature) to the shoulders (0.82; Drillis & Contini's proportions): 1.0–1.3 m above the
-// ground is torso for every stature from 1.6 to 1.9 m (P0 dropped only the legs, below 0.6 m).
-ParamSpec torsoBand(const std::string& name) {
-  if (name == "fit_min_height")
-    return ParamSpec::real("fit_min_height", 1.0, "m", -10, 10,
-                           "lowest point height the torso is fitted to (hips of a 1.9 m adult)");
-  return ParamSpec::real(
-      "fit_max_height", 1.3, "m", -10, 10,
-      "highest point height the torso is fitted to (shoulders of a 1.6 m adult)");
-}
+struct MheMlesacParams {
+  ShapeTrackerParams shape;  // association, management, the torso band, the KF alongside
+  MheEstimatorParams estimator;
+  MheMlesacParams() {
+    // Eq. 3's s is negative inside the ellipse, so a point of the head, the neck or the hips
+    // (which project inside the torso's outline) pulls the fit inwards as hard as a stray point
+    // outside pulls it out: the data term must see the torso only. An adult's torso spans the
+    // hips (0.53 of the stature) to the shoulders (0.82; Drillis & Contini's proportions):
+    // 1.0–1.3 m above the ground is torso for every stature from 1.6 to 1.9 m (P0 dropped only
+    // the legs, below 0.6 m).
+    shape.fit_min_height = 1.0;
+    shape.fit_max_height = 1.3;
+  }
+};
 
-std::vector<ParamSpec> mheParams() {
-  return {
-      ParamSpec::integer("horizon", 10, "frames", 2, 100, "H: the moving horizon (P0)"),
-      ParamSpec::integer("subset", 100, "points", 3, 100000,
-                         "|Psi|: points each candidate samples from the whole horizon (P0)"),
-      ParamSpec::integer("candidates", 100, "", 1, 100000,
-                         "j_max: MLESAC candidates per frame (P0)"),
-      ParamSpec::vector("system_noise", std::vector<double>{0.1, 0.1, 0.08, 1e-4, 1e-4}, "unit^2",
-                        5, 1e-12, 1e6,
-                        "Q (P0): variances of the noise on [vx, vy, omega] (accelerations) and "
-                        "[alpha, beta] (rates) of eq. 2"),
-      ParamSpec::real("r", 1e-4, "", 1e-12, 1e6, "R (P0): the ellipse deviation's variance"),
-      ParamSpec::real("theta_th", M_PI / 18, "rad", 0.001, M_PI / 2,
-                      "eq. 9: the axis stays this close to its a priori value each frame (P0)"),
-      ParamSpec::real("d_th", 0.8, "", 1e-6, 100, "a point with |s| below this is an inlier (P0)"),
-      ParamSpec::choice("selection", "inlier_mean", {"inlier_mean", "truncated"},
-                        "candidate likelihood: eq. 5 on the inliers (P0) or every point with "
-                        "outliers at d_th^2 (MLESAC)"),
-      ParamSpec::boolean(
-          "mlesac", true,
-          "sample candidates (false: one MHE on every point, P0's MHE without MLESAC)"),
-      ParamSpec::boolean("ransac_only", false,
-                         "report the KF alongside on each frame's RANSAC ellipse and never run the "
-                         "MHE (P0's RANSAC comparison)"),
-      ParamSpec::integer("finalists", 1, "", 0, 100000,
-                         "candidates Ipopt solves after the fast screen ranks them (0: every one, "
-                         "P0's offline procedure)"),
-      ParamSpec::integer("screen_iterations", 2, "", 1, 1000,
-                         "Levenberg-Marquardt steps of the screen per candidate"),
-      ParamSpec::integer("survivors", 10, "", 1, 100000,
-                         "candidates the screen keeps after half its steps (pruning)"),
-      ParamSpec::boolean("refit", true,
-                         "solve the winner again on all its inliers (MLESAC's last step)"),
-      ParamSpec::integer("refit_points", 400, "points", 3, 10000000,
-                         "the refit's sample: at most this many of the winner's inliers"),
-      ParamSpec::integer("ipopt_max_iter", 30, "", 1, 10000, "Ipopt iterations per solve at most"),
-      ParamSpec::real("ipopt_tol", 1e-6, "", 1e-12, 1, "Ipopt's convergence tolerance (tol)"),
-      ParamSpec::integer("ipopt_print_level", 0, "", 0, 12, "Ipopt's log on stdout (0: silent)"),
+const ParamTable<MheMlesacParams>& table() {
+  using P = MheMlesacParams;
+  const auto mhe = [](auto member) {
+    return path(&P::estimator, &MheEstimatorParams::mhe, member);
   };
+  const auto sel = [](auto member) {
+    return path(&P::estimator, &MheEstimatorParams::mlesac, member);
+  };
+  const auto ipopt = [](auto member) {
+    return path(&P::estimator, &MheEstimatorParams::solver, member);
+  };
+  using M = mhe::MheParams;
+  using S = mhe::MlesacOptions;
+  using I = mhe::SolverOptions;
+  static const auto t =
+      ParamTable<P>()
+          // The IMM's noise `q` is not P0's: its model's noise is system_noise.
+          .include(&P::shape, ShapeTracker::commonTable().without("q"))
+          .include(&P::shape, ShapeTracker::ellipseTable())
+          .integer(mhe(&M::horizon), "horizon", "frames", 2, 100, "H: the moving horizon (P0)")
+          .integer(mhe(&M::subset), "subset", "points", 3, 100000,
+                   "|Psi|: points each candidate samples from the whole horizon (P0)")
+          .integer(mhe(&M::candidates), "candidates", "", 1, 100000,
+                   "j_max: MLESAC candidates per frame (P0)")
+          .vector(mhe(&M::q), "system_noise", "unit^2", 5, 1e-12, 1e6,
+                  "Q (P0): variances of the noise on [vx, vy, omega] (accelerations) and "
+                  "[alpha, beta] (rates) of eq. 2")
+          .real(mhe(&M::r), "r", "", 1e-12, 1e6, "R (P0): the ellipse deviation's variance")
+          .real(mhe(&M::theta_th), "theta_th", "rad", 0.001, M_PI / 2,
+                "eq. 9: the axis stays this close to its a priori value each frame (P0)")
+          .real(mhe(&M::d_th), "d_th", "", 1e-6, 100,
+                "a point with |s| below this is an inlier (P0)")
+          .choice(sel(&S::selection), "selection",
+                  {{"inlier_mean", mhe::Selection::InlierMean},
+                   {"truncated", mhe::Selection::Truncated}},
+                  "candidate likelihood: eq. 5 on the inliers (P0) or every point with outliers "
+                  "at d_th^2 (MLESAC)")
+          .boolean(sel(&S::sampling), "mlesac",
+                   "sample candidates (false: one MHE on every point, P0's MHE without MLESAC)")
+          .boolean(path(&P::estimator, &MheEstimatorParams::kf_only), "ransac_only",
+                   "report the KF alongside on each frame's RANSAC ellipse and never run the MHE "
+                   "(P0's RANSAC comparison)")
+          .integer(sel(&S::finalists), "finalists", "", 0, 100000,
+                   "candidates Ipopt solves after the fast screen ranks them (0: every one, P0's "
+                   "offline procedure)")
+          .integer(sel(&S::screen_iterations), "screen_iterations", "", 1, 1000,
+                   "Levenberg-Marquardt steps of the screen per candidate")
+          .integer(sel(&S::survivors), "survivors", "", 1, 100000,
+                   "candidates the screen keeps after half its steps (pruning)")
+          .boolean(sel(&S::refit), "refit",
+                   "solve the winner again on all its inliers (MLESAC's last step)")
+          .integer(sel(&S::refit_points), "refit_points", "points", 3, 10000000,
+                   "the refit's sample: at most this many of the winner's inliers")
+          .integer(ipopt(&I::max_iterations), "ipopt_max_iter", "", 1, 10000,
+                   "Ipopt iterations per solve at most")
+          .real(ipopt(&I::tolerance), "ipopt_tol", "", 1e-12, 1,
+                "Ipopt's convergence tolerance (tol)")
+          .integer(ipopt(&I::print_level), "ipopt_print_level", "", 0, 12,
+                   "Ipopt's log on stdout (0: silent)");
+  return t;
 }
 
-MheEstimatorParams readMhe(const ParamSet& s) {
-  ShapeTrackerParams shape;
-  ShapeTracker::read(s, shape);
-  MheEstimatorParams p;
-  p.observation = shape.observation;
-  p.flip_speed = shape.flip_speed;
-  p.init_speed_sigma = shape.init_speed_sigma;
-  mhe::MheParams& m = p.mhe;
-  m.horizon = int(s.getInt("horizon"));
-  m.subset = int(s.getInt("subset"));
-  m.candidates = int(s.getInt("candidates"));
-  const std::vector<double> q = s.getVector("system_noise");
-  for (int i = 0; i < 5; ++i) m.q(i) = q[std::size_t(i)];
-  m.r = s.getDouble("r");
-  // Eq. 7–8 share the KF's RANSAC bounds (P0 and P1 use the same values).
-  m.alpha_min = p.observation.ellipse.alpha_min;
-  m.alpha_max = p.observation.ellipse.alpha_max;
-  m.beta_min = p.observation.ellipse.beta_min;
-  m.beta_max = p.observation.ellipse.beta_max;
-  m.theta_th = s.getDouble("theta_th");
-  m.d_th = s.getDouble("d_th");
-  p.mlesac.selection = s.getString("selection") == "truncated" ? mhe::Selection::Truncated
-                                                               : mhe::Selection::InlierMean;
-  p.mlesac.sampling = s.getBool("mlesac");
-  p.kf_only = s.getBool("ransac_only");
-  p.mlesac.finalists = int(s.getInt("finalists"));
-  p.mlesac.screen_iterations = int(s.getInt("screen_iterations"));
-  p.mlesac.survivors = int(s.getInt("survivors"));
-  p.mlesac.refit = s.getBool("refit");
-  p.mlesac.refit_points = int(s.getInt("refit_points"));
-  p.solver.max_iterations = int(s.getInt("ipopt_max_iter"));
-  p.solver.tolerance = s.getDouble("ipopt_tol");
-  p.solver.print_level = int(s.getInt("ipopt_print_level"));
-  return p;
+// The estimator's parameters with what it shares with the tracker: the KF's observation and
+// noise, and eq. 7–8's bounds, which are the RANSAC's (P0 and P1 use the same values).
+MheEstimatorParams estimatorParams(const MheMlesacParams& p) {
+  MheEstimatorParams e = p.estimator;
+  e.observation = p.shape.observation;
+  e.flip_speed = p.shape.flip_speed;
+  e.init_speed_sigma = p.shape.init_speed_sigma;
+  const fit::EllipseRansacParams& r = p.shape.observation.ellipse;
+  e.mhe.alpha_min = r.alpha_min;
+  e.mhe.alpha_max = r.alpha_max;
+  e.mhe.beta_min = r.beta_min;
+  e.mhe.beta_max = r.beta_max;
+  return e;
 }
 
 class MheMlesacStage : public Tracker {
  public:
-  explicit MheMlesacStage(const ParamSet& params)
+  explicit MheMlesacStage(const MheMlesacParams& p)
       : counters_(std::make_shared<MheCounters>()),
-        stage_(params, mheTorsoEstimators(readMhe(params), counters_)) {}
+        stage_(p.shape, mheTorsoEstimators(estimatorParams(p), counters_)) {}
   void process(Frame& f) override { stage_.process(f); }
   void finish() override {
     const MheCounters& c = *counters_;
@@ -138,17 +138,9 @@ PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Tracker;
   d.doc = "P0: MHE-MLESAC torso ellipse [x,y,theta,vx,vy,omega,alpha,beta] solved with Ipopt";
-  for (const ParamSpec& spec : ShapeTracker::commonParams()) {
-    if (spec.name == "q") continue;  // the IMM's noise; P0's is system_noise
-    if (spec.name == "fit_min_height" || spec.name == "fit_max_height")
-      d.params.push_back(torsoBand(spec.name));
-    else
-      d.params.push_back(spec);
-  }
-  for (auto group : {ShapeTracker::ellipseParams(), mheParams()})
-    d.params.insert(d.params.end(), group.begin(), group.end());
+  d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
-    return std::make_unique<MheMlesacStage>(ctx.params);
+    return std::make_unique<MheMlesacStage>(table().read(ctx.params));
   };
   return d;
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pedtrack/frame.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 
 namespace pedtrack::classify {
@@ -32,15 +33,17 @@ enum class DetectionShape {
   Ellipse,  ///< a torso ellipse fitted to the cluster's points (2D segments)
   Auto,     ///< Ellipse for 2D segments with ellipse features that are not legs, else None
 };
-DetectionShape parseDetectionShape(const std::string& s);  ///< "auto" | "none" | "ellipse"
 
 /// Appends to f.detections one detection per row whose score ≥ threshold: the cluster's position
 /// (or fitted ellipse centre) in the fixed frame, the score and the shape.
 void appendDetections(Frame& f, const std::vector<int>& cluster_of,
                       const std::vector<double>& scores, double threshold, DetectionShape shape);
 
-/// The `shape` parameter every classifier plugin declares.
-ParamSpec detectionShapeParam();
+/// The `shape` key every classifier plugin declares: include() it in the plugin's table.
+struct DetectionShapeParams {
+  DetectionShape shape = DetectionShape::Auto;
+};
+const ParamTable<DetectionShapeParams>& detectionShapeTable();
 
 /// A classifier stage: each frame, the model's features of every cluster are scored by score()
 /// and the clusters scoring at least `threshold` become detections. A plugin supplies score().

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "pedtrack/object_table.h"
+#include "pedtrack/eval/object_table.h"
 
 namespace pedtrack::eval {
 

@@ -28,7 +28,7 @@ bool fitCircleBounded(const Points2& pts, double r_min, double r_max, Circle& ou
 double circleResidual(const Points2& pts, const Circle& c);
 
 struct CircleRansacParams {
-  double r_min = 0.10, r_max = 0.35;  ///< radius bounds (m)
+  double r_min = 0.10, r_max = 0.30;  ///< radius bounds (m): a torso's
   double inlier_threshold = 0.03;     ///< a point within this of the circle is an inlier (m)
   int max_iterations = 100;           ///< samples of 3 points at most
   double confidence = 0.95;           ///< adaptive stop, as fitEllipseRansac

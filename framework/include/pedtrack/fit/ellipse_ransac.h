@@ -33,7 +33,7 @@ struct EllipseRansacParams {
   double confidence = 0.95;
   double alpha_min = 0.10, alpha_max = 0.20;  ///< eq. 9 (m)
   double beta_min = 0.05, beta_max = 0.10;    ///< eq. 10 (m)
-  double theta_window = M_PI / 12;            ///< θ_th of eq. 11 (rad)
+  double theta_window = 0.261799;             ///< θ_th of eq. 11 (rad): P1's π/12, six digits
   double inlier_threshold = 0.5;              ///< d_th: |s| above it is an outlier (eq. 13)
   bool center_correction = true;              ///< the exp term of eq. 6
   int solver_iterations = 20;  ///< LM iterations (trial steps) of eq. 12 per sample, at most

@@ -30,7 +30,8 @@ struct SegmentParams {
   double adaptive_angle = 0;
   /// >= 0: more beams than this without a return between two points also start a new segment
   /// (the beams between them saw past both: a range discontinuity); < 0: only the gap counts.
-  int max_missing = -1;
+  /// One missing beam is a dropout, not a discontinuity.
+  int max_missing = 1;
 };
 
 /// Splits one run into segments of Kept points (cloud indices), breaking where two consecutive

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "pedtrack/sim/reflectivity.h"
+
 namespace pedtrack::sim {
 
 struct SensorSpec {
@@ -77,7 +79,8 @@ struct ReturnTruth {
 /// the device's range quantisation, and records who each return it produced belongs to.
 class ObservationMaker {
  public:
-  explicit ObservationMaker(const SensorSpec& spec);
+  /// `seed` seeds the intensities' own streams (reflectivity.h).
+  ObservationMaker(const SensorSpec& spec, unsigned long seed);
   /// `truth.per_person` must be sized to the largest person id + 1; `owners` is filled.
   mrpt::obs::CObservation::Ptr make(const RangeImage& img, double t, std::mt19937_64& rng,
                                     ReturnTruth& truth) const;
@@ -88,6 +91,7 @@ class ObservationMaker {
   mrpt::obs::CObservation::Ptr makeVelodyne(const RangeImage& img, double t, std::mt19937_64& rng,
                                             ReturnTruth& truth) const;
   SensorSpec spec_;
+  mutable Reflectivity reflectivity_;  // the VLP-16's intensity byte
 };
 
 }  // namespace pedtrack::sim

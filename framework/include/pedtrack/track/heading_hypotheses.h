@@ -16,6 +16,7 @@
 // agrees (people walk forward; legs open side by side only in a side step, with the body
 // moving sideways), near-duplicates merge and the `count` best survive.
 #include <Eigen/Core>
+#include <cmath>
 #include <vector>
 
 namespace pedtrack::track {
@@ -38,7 +39,9 @@ struct HeadingHypothesesParams {
   /// / 15.2° with 0.07; 0.05: 8.2 / 7.5 / 5.1 / 15.6°, 0.1: 7.2 / 7.7 / 5.4 / 15.6°. 0: as
   /// sigma_leg.
   double occluded_sigma_leg = 0.07;
-  double sigma_floor = 0.05;  ///< rad, no reading is taken as sharper than this
+  /// rad, no reading is taken as sharper than this: about 0.05 rad, kept at the 2.86479° its key
+  /// has always given (every figure was measured with it).
+  double sigma_floor = 2.86479 * (M_PI / 180);
   /// Motion evidence: at motion_speed or faster the velocity's direction ψ is compared with
   /// a child's heading θ. A walking child (legs along the gait) expects ψ − θ ≈ 0, or ≈ π while
   /// it is in its walking-backward mode, in walk_weight of the scans (anything in the rest); a
@@ -50,8 +53,9 @@ struct HeadingHypothesesParams {
   /// 0.3: side steps start slowly (P3 scenario 2's side step off its turn read as a 38° turn
   /// until it was 0.3 m/s fast; over 170 seeds scenario 2 went 7.6° -> 3.7°, scenario 3 5.2° ->
   /// 5.6°, where the walker sets off and stops).
-  double motion_speed = 0.15;    ///< m/s
-  double motion_sigma = 0.7;     ///< rad, spread of ψ − θ about each expected direction
+  double motion_speed = 0.15;  ///< m/s
+  /// rad, spread of ψ − θ about each expected direction: about 0.7 rad, the key's 40.107°.
+  double motion_sigma = 40.107 * (M_PI / 180);
   double walk_weight = 0.6;      ///< see motion_speed
   double sideways_weight = 0.6;  ///< see motion_speed
   double mode_switch = 0.02;     ///< chance per scan of starting or ending a backward walk
@@ -86,12 +90,14 @@ struct HeadingHypothesesParams {
   /// 13.0°, 0.02 s: 7.0 / 3.7 / 4.9 / 13.7°.
   double hidden_turn_tau = 0.05;
   /// rad, a hidden leg bounds the heading to the ray's perpendicular ± this (atan of the
-  /// largest sagittal leg spread over the step width: 0.3 / 0.17 m)
-  double hidden_spread = 1.05;
+  /// largest sagittal leg spread over the step width: 0.3 / 0.17 m; about 1.05 rad, the key's
+  /// 60.1606°)
+  double hidden_spread = 60.1606 * (M_PI / 180);
   /// rad/s and rad/s²: the turn rate's and its change's standard deviations are held below
   /// these. Unseen (legs hidden, bounds only) they would grow each scan until a hypothesis
-  /// could reach any reading, its mirror image's too (capRateVariance).
-  double rate_sigma_max = 1.0;
+  /// could reach any reading, its mirror image's too (capRateVariance). About 1 rad/s, the
+  /// key's 57.2958°/s.
+  double rate_sigma_max = 57.2958 * (M_PI / 180);
   double accel_sigma_max = 20;  // internal
   /// Chance per scan that the legs' names were swapped (a hypothesis reading d as right − left:
   /// `HeadingReading::mirrored`). The names are kept from scan to scan without the heading

@@ -19,7 +19,7 @@ namespace pedtrack::track {
 
 struct LegPoseParams {
   double var_ax = 100, var_ay = 100;  ///< (m/s²)², P3 §2.5's σ²_ax, σ²_ay
-  double var_atheta = M_PI * M_PI;    ///< (rad/s²)², P3's σ²_aθ
+  double var_atheta = 9.86960440109;  ///< (rad/s²)², P3's σ²_aθ = π² (to the key's 12 digits)
   double sigma_xy = 0.03;             ///< m, P3's σ_X = σ_Y
   double sigma_theta = M_PI / 15;     ///< rad, P3's σ_θ
   /// The measurement's standard deviations are multiplied by this when one leg was inferred
@@ -65,8 +65,10 @@ struct LegPoseParams {
   /// Not applied when over 90° from the heading (walking backward: the facing rules decide).
   double motion_heading_sigma = 0;
   double motion_heading_speed = 0.5;  ///< m/s, see motion_heading_sigma
-  /// Eq. 3's solver: null = gait::fitVarPro; leg_pose can plug in gait::fitIpopt (a separate
-  /// library, so the framework does not depend on Ipopt).
+  /// Eq. 3's solver: gait::fitVarPro, or Ipopt by gait::fitIpopt (pedtrack_ipopt, so these parts
+  /// do not depend on Ipopt), which useChosenGaitSolver() plugs into gait_solver.
+  enum class GaitSolver { VarPro, Ipopt } solver = GaitSolver::VarPro;
+  /// The solver called: null = gait::fitVarPro.
   gait::Params (*gait_solver)(const std::vector<gait::Sample>&, const gait::Bounds&,
                               const gait::Params& previous) = nullptr;
   ZoningParams zoning;

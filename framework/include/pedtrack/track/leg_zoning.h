@@ -18,6 +18,7 @@
 // P3 gives the zones as a figure, not numbers: the thresholds are ours (documented parameters
 // of leg_pose and leg_people).
 #include <Eigen/Core>
+#include <cmath>
 
 namespace pedtrack::track {
 
@@ -32,7 +33,8 @@ struct ZoningParams {
   double width_tolerance = 0.15;    ///< go-straight band half-width, fraction of W₀
   double sideways_tolerance = 0.3;  ///< side step: |d_u| within this fraction of W₀
   bool refine_straight = true;      ///< measure small turns inside the go-straight band
-  double slight_turn_max = 0.79;    ///< rad (45°): larger turns are turns in place
+  /// rad: larger turns are turns in place (about 0.79 rad, the key's 45.2637°).
+  double slight_turn_max = 45.2637 * (M_PI / 180);
   /// A turn in place of over 90° is read as the legs' labels swapped (the nearer perpendicular).
   /// Off for one person, whose legs the estimator labels itself and whose fast turns may leave
   /// θ̂ far behind; on in leg_people, where a crowd's global assignment swaps leg identities

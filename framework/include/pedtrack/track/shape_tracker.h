@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pedtrack/frame.h"
+#include "pedtrack/param_table.h"
 #include "pedtrack/params.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/track/management.h"
@@ -29,9 +30,10 @@ struct ShapeTrackerParams {
   double gate = 1.0;                   ///< largest track–cluster distance (m)
   int confirm_hits = 3, confirm_window = 5, max_misses = 10;
   double fit_min_height = 0.6, fit_max_height = 2.2;  ///< points the shapes are fitted to (m)
-  double cog_alpha = 0.17, cog_beta = 0.08;           ///< the PC-COG model's fixed size (P1)
-  double init_speed_sigma = 1.0;                      ///< a new track's speed uncertainty (m/s)
-  int birth_points = 10;    ///< torso-band points a cluster needs to start a track (N_b)
+  /// The PC-COG model's fixed alpha (P1); its beta is observation.cog_beta.
+  double cog_alpha = 0.17;
+  double init_speed_sigma = 1.0;  ///< a new track's speed uncertainty (m/s)
+  int birth_points = 10;          ///< torso-band points a cluster needs to start a track (N_b)
   double flip_speed = 0.2;  ///< walking "backwards" faster than this turns the heading round (m/s)
   unsigned seed = 1;        ///< RANSAC sampling
   bool report_tentative = false;
@@ -48,14 +50,13 @@ class ShapeTracker {
   /// and appends the reported tracks to f.tracks.
   void process(Frame& f);
 
-  /// The parameters every shape tracker plugin declares (association, management, motion noise,
-  /// height band, seed), their reader, and the groups of the ellipse, box and circle models.
-  static std::vector<ParamSpec> commonParams();
-  static std::vector<ParamSpec> ellipseParams();
-  static std::vector<ParamSpec> boxParams();
-  static std::vector<ParamSpec> circleParams();
-  /// Reads the groups the ParamSet declares into `p` (ConfigError naming the key when invalid).
-  static void read(const ParamSet& set, ShapeTrackerParams& p);
+  /// The keys every shape tracker plugin declares (association, management, motion noise `q`,
+  /// height band, seed) and the groups of the ellipse, box and circle observation models, each
+  /// with its rules (a minimum not above its maximum); a plugin appends the groups it observes.
+  static const ParamTable<ShapeTrackerParams>& commonTable();
+  static const ParamTable<ShapeTrackerParams>& ellipseTable();
+  static const ParamTable<ShapeTrackerParams>& boxTable();
+  static const ParamTable<ShapeTrackerParams>& circleTable();
 
  private:
   struct Candidate {
@@ -91,15 +92,13 @@ class ShapeTracker {
 /// these two and in the parameter groups they declare).
 class ShapeTrackerStage : public Tracker {
  public:
-  ShapeTrackerStage(const ParamSet& params, std::vector<ShapeModel> models,
-                    Eigen::MatrixXd transition);
+  explicit ShapeTrackerStage(ShapeTrackerParams params) : tracker_(std::move(params)) {}
   /// A stage whose tracks are estimated by `estimators` (the common parameters still apply).
-  ShapeTrackerStage(const ParamSet& params, TorsoEstimatorFactory estimators);
+  ShapeTrackerStage(ShapeTrackerParams params, TorsoEstimatorFactory estimators)
+      : tracker_(std::move(params), std::move(estimators)) {}
   void process(Frame& f) override { tracker_.process(f); }
 
  private:
-  static ShapeTrackerParams makeParams(const ParamSet& params, std::vector<ShapeModel> models,
-                                       Eigen::MatrixXd transition);
   ShapeTracker tracker_;
 };
 
