@@ -47,7 +47,7 @@ int rosCommand(const std::vector<std::string>& args) {
           if (!s.params.getString(k).empty()) std::cerr << " " << s.params.getString(k);
     std::cerr << " (SIGINT/SIGTERM ends the run)\n";
   }
-  return runToEnd(pipeline, c.run);
+  return runToEnd(pipeline, c.run, {"received", false});
 }
 
 }  // namespace pedtrack::cli

@@ -81,16 +81,23 @@ void readRunOptions(const po::variables_map& vm, RunOptions& run) {
   run.progress = !vm.count("quiet");
   run.point_labels = !vm.count("no-point-labels");
   if (run.live_queue < 1) throw ConfigError("--live-queue: must be at least 1");
-  if (!run.record.empty()) checkWritableFile(run.record, "--record");
+  if (!run.record.empty()) checkWritableFile(run.record, "--record", run.out_dir);
 }
 
-void checkWritableFile(const std::string& path, const std::string& option) {
+void checkWritableFile(const std::string& path, const std::string& option,
+                       const std::string& created_dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path p(path);
   if (fs::is_directory(p, ec))
     throw ConfigError(option + " " + path + ": is a directory, not a file");
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  // A folder the run creates itself (--out) need not exist yet: its nearest existing ancestor
+  // must take it.
+  if (!created_dir.empty() &&
+      fs::absolute(dir).lexically_normal() == fs::absolute(created_dir).lexically_normal())
+    while (!fs::exists(dir, ec) && dir.has_parent_path() && dir != dir.parent_path())
+      dir = dir.parent_path();
   if (!fs::is_directory(dir, ec))
     throw ConfigError(option + " " + path + ": no directory " + dir.string());
   if (::access(dir.c_str(), W_OK) != 0 || (fs::exists(p, ec) && ::access(p.c_str(), W_OK) != 0))

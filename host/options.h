@@ -32,7 +32,9 @@ void addRunOptions(po::options_description& options, RunOptions& run,
 void readRunOptions(const po::variables_map& vm, RunOptions& run);
 
 /// ConfigError naming `option` unless `path` is a file that can be created or overwritten (its
-/// directory exists and is writable; the path is no directory).
-void checkWritableFile(const std::string& path, const std::string& option);
+/// directory exists and is writable, or is `created_dir`, which the run creates, under a
+/// writable one; the path is no directory).
+void checkWritableFile(const std::string& path, const std::string& option,
+                       const std::string& created_dir = std::string());
 
 }  // namespace pedtrack::cli

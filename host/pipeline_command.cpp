@@ -36,15 +36,16 @@ bool parsePipelineCommand(const std::string& command, const po::options_descript
   return true;
 }
 
-int runToEnd(Pipeline& pipeline, const RunOptions& run) {
+int runToEnd(Pipeline& pipeline, const RunOptions& run, const RunReport& report) {
   installStopHandlers();
   const RunSummary s = pipeline.run(run);
-  if (run.progress || s.status != "ok") {
+  if (run.progress || s.status == "error" || (report.unless_ok && s.status != "ok")) {
     std::fprintf(stderr,
-                 "%zu frames read, %zu processed, %zu dropped, %zu failed in %.3f s (%.0f "
+                 "%zu frames %s, %zu processed, %zu dropped, %zu failed in %.3f s (%.0f "
                  "frames/s)%s%s\n",
-                 s.frames_read, s.frames_processed, s.frames_dropped, s.frames_failed,
-                 s.wall_time_s, s.wall_time_s > 0 ? s.frames_processed / s.wall_time_s : 0.0,
+                 s.frames_read, report.frames_word, s.frames_processed, s.frames_dropped,
+                 s.frames_failed, s.wall_time_s,
+                 s.wall_time_s > 0 ? s.frames_processed / s.wall_time_s : 0.0,
                  run.out_dir.empty() ? "" : "; outputs in ", run.out_dir.c_str());
   }
   if (s.status == "error") {

@@ -24,8 +24,17 @@ po::options_description pipelineOptions(PipelineCommand& c, const std::string& t
 bool parsePipelineCommand(const std::string& command, const po::options_description& options,
                           const std::vector<std::string>& args, PipelineCommand& c);
 
-/// Runs `pipeline` until its source ends or SIGINT/SIGTERM, prints the summary line (always on
-/// failure; with progress otherwise) and returns the exit code: 1 when the source failed.
-int runToEnd(Pipeline& pipeline, const RunOptions& run);
+/// How a command reports the end of its run.
+struct RunReport {
+  const char* frames_word = "read";  ///< "read" (a file, a device) or "received" (topics)
+  /// The summary also without progress output when the run ended other than "ok" (run: an
+  /// interrupted replay is worth a line); else only when it failed (ros: SIGINT is its end).
+  bool unless_ok = true;
+};
+
+/// Runs `pipeline` until its source ends or SIGINT/SIGTERM, prints the summary line (with
+/// progress output, and as `report` says without) and returns the exit code: 1 when the source
+/// failed.
+int runToEnd(Pipeline& pipeline, const RunOptions& run, const RunReport& report = {});
 
 }  // namespace pedtrack::cli

@@ -11,10 +11,10 @@
 # Every file of each run's --out folder is compared except run.json,
 # whose timings differ from run to run; run.json is compared with its timing fields removed.
 # Pipelines that need a device are skipped; those that need the leg_tracker data run when
-# PEDTRACK_DATA (by default the data folder next to the checkout) holds it. Two more runs cover what users run most:
-# the leg pipeline on the leg_tracker demo bag and on the negative_2 bag (robot moving, no
-# odometry: scan matching). ONLY=REGEX runs just the pipelines whose name matches. Prints one
-# line per pipeline; exit 1 when any output differs.
+# PEDTRACK_DATA (by default the data folder next to the checkout) holds it. One more run covers
+# what users run most: the leg pipeline on the leg_tracker demo bag (negative_2_merged.ini is the
+# moving robot without odometry: scan matching). ONLY=REGEX runs just the pipelines whose name
+# matches. Prints one line per pipeline; exit 1 when any output differs.
 set -uo pipefail
 old_root=$(realpath "$1") new_root=$(realpath "$2")
 old=$(realpath "${OLD_BUILD:-$old_root/build}")/bin/pedtrack

@@ -72,6 +72,12 @@ TEST_CASE("every kind of bad pipeline names file, section and key", "[config]") 
                 PEDTRACK_SOURCE_DIR + "/models/legs_svm.yml\n[odo]\nplugin = scan_odometry\n") ==
         "p.ini: [odo] plugin: 'scan_odometry' sets the robot's pose and must run before [cls] (a "
         "classifier, which places what it finds in the fixed frame)");
+  // A key that moved to another plugin says where it went.
+  CHECK_THAT(
+      errorOf(source("").replace(source("").find("stages = source"), 15, "stages = source track") +
+              "[track]\nplugin = leg_people\nscan_odometry = on\n"),
+      Catch::Contains("[track] scan_odometry: no longer a key of plugin 'leg_people': "
+                      "scan matching is a stage of its own"));
   CHECK_NOTHROW(
       parse(source("").replace(source("").find("stages = source"), 15, "stages = source seg odo") +
             "[seg]\nplugin = scan_segments\n[odo]\nplugin = scan_odometry\n"));

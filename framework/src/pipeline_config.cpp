@@ -78,7 +78,8 @@ using CliKeys = std::set<std::pair<std::string, std::string>>;
 ParamSet sectionParams(const IniModel& model, const std::string& file, const std::string& name,
                        const std::vector<ParamSpec>& specs, bool accepts_other_keys,
                        const std::string& owner, const std::string& otherwise,
-                       const fs::path& base_dir, const CliKeys& from_cli) {
+                       const fs::path& base_dir, const CliKeys& from_cli,
+                       const std::vector<std::pair<std::string, std::string>>& moved = {}) {
   ParamSet params(file, name);
   std::vector<std::string> declared;
   for (const auto& p : specs) declared.push_back(p.name);
@@ -86,6 +87,10 @@ ParamSet sectionParams(const IniModel& model, const std::string& file, const std
     if (key == "plugin") continue;
     if (std::find(declared.begin(), declared.end(), key) != declared.end()) continue;
     if (accepts_other_keys) continue;
+    for (const auto& [old_key, now] : moved)
+      if (old_key == key)
+        throw ConfigError(file + ": [" + name + "] " + key + ": no longer a key of " + owner +
+                          ": " + now);
     const std::string hint = closestMatch(key, declared);
     throw ConfigError(file + ": [" + name + "] " + key + ": unknown key for " + owner +
                       (hint.empty() ? otherwise : " (did you mean '" + hint + "'?)"));
@@ -259,9 +264,9 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
                             "] (a " + toString(before.descriptor->category) +
                             ", which places what it finds in the fixed frame)");
 
-    sc.params =
-        sectionParams(model, file, name, d.params, d.accepts_other_keys, "plugin '" + d.name + "'",
-                      " (`pedtrack plugins " + d.name + "` lists its keys)", base_dir, from_cli);
+    sc.params = sectionParams(
+        model, file, name, d.params, d.accepts_other_keys, "plugin '" + d.name + "'",
+        " (`pedtrack plugins " + d.name + "` lists its keys)", base_dir, from_cli, d.moved_keys);
     cfg.stages.push_back(std::move(sc));
   }
   if (model.hasSection("faults"))

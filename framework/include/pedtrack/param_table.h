@@ -117,6 +117,7 @@ class ParamTable {
     Binding b;
     b.name = name;
     b.offset = offsetOf(member);
+    b.size = sizeOf(member);
     b.spec = [=, name = std::move(name), unit = std::move(unit), doc = std::move(doc)](const T& d) {
       const double v = double(get(member, d)) / scale;
       ParamSpec s = ParamSpec::real(name, std::nullopt, unit, min, max, doc);
@@ -137,6 +138,7 @@ class ParamTable {
     Binding b;
     b.name = name;
     b.offset = offsetOf(member);
+    b.size = sizeOf(member);
     b.spec = [=, name = std::move(name), unit = std::move(unit), doc = std::move(doc)](const T& d) {
       return ParamSpec::integer(name, long(get(member, d)), unit, min, max, doc);
     };
@@ -152,6 +154,7 @@ class ParamTable {
     Binding b;
     b.name = name;
     b.offset = offsetOf(member);
+    b.size = sizeOf(member);
     b.spec = [=, name = std::move(name), doc = std::move(doc)](const T& d) {
       return ParamSpec::boolean(name, bool(get(member, d)), doc);
     };
@@ -169,6 +172,7 @@ class ParamTable {
     Binding b;
     b.name = name;
     b.offset = offsetOf(member);
+    b.size = sizeOf(member);
     b.spec = [=, name = std::move(name), doc = std::move(doc)](const T& d) {
       if constexpr (std::is_same_v<M, std::vector<std::string>>) {
         std::string words;
@@ -193,6 +197,7 @@ class ParamTable {
     Binding b;
     b.name = name;
     b.offset = offsetOf(member);
+    b.size = sizeOf(member);
     b.spec = [name = std::move(name), doc = std::move(doc)](const T&) {
       return ParamSpec::inputFile(name, doc);
     };
@@ -212,6 +217,7 @@ class ParamTable {
     Binding b;
     b.name = name;
     b.offset = offsetOf(member);
+    b.size = sizeOf(member);
     b.spec = [=, name = std::move(name), doc = std::move(doc)](const T& d) {
       std::vector<std::string> choices;
       std::string def;
@@ -236,9 +242,17 @@ class ParamTable {
   template <class Access>
   ParamTable& vector(Access member, std::string name, std::string unit, std::size_t length,
                      double min, double max, std::string doc, double scale = 1) {
+    // A member of a fixed count (several fields, a std::array, a fixed Eigen vector) must be
+    // declared with that count: the reader writes `length` numbers into it.
+    static const T probe{};
+    const std::size_t count = numbersOf(member, probe).size();
+    if (!resizable<Access>() && length != count)
+      throw std::logic_error("parameter '" + name + "' has " + std::to_string(count) +
+                             " numbers, declared " + std::to_string(length));
     Binding b;
     b.name = name;
     b.offset = offsetOf(member);
+    b.size = sizeOf(member);
     b.spec = [=, name = std::move(name), unit = std::move(unit), doc = std::move(doc)](const T& d) {
       std::vector<double> v = numbersOf(member, d);
       for (double& x : v) x /= scale;
@@ -259,8 +273,9 @@ class ParamTable {
   template <class Access>
   ParamTable& check(Access member, std::function<std::string(const T&)> problem) {
     const std::ptrdiff_t off = offsetOf(member);
+    const std::size_t size = sizeOf(member);
     for (const auto& b : bindings_)
-      if (b.offset == off) {
+      if (b.offset == off && b.size == size) {
         checks_.push_back({b.name, std::move(problem)});
         return *this;
       }
@@ -303,6 +318,7 @@ class ParamTable {
       Binding b;
       b.name = sb.name;
       b.offset = offsetOf(member) + sb.offset;
+      b.size = sb.size;
       b.spec = [=](const T& d) { return sb.spec(get(member, d)); };
       b.read = [=](T& t, const ParamSet& p, const std::string& key) {
         sb.read(get(member, t), p, key);
@@ -343,8 +359,9 @@ class ParamTable {
   template <class Access>
   std::string where(const ParamSet& p, Access member) const {
     const std::ptrdiff_t off = offsetOf(member);
+    const std::size_t size = sizeOf(member);
     for (const auto& b : bindings_)
-      if (b.offset == off) return p.where(b.name);
+      if (b.offset == off && b.size == size) return p.where(b.name);
     throw std::logic_error("ParamTable::where: the member has no key");
   }
 
@@ -354,7 +371,10 @@ class ParamTable {
 
   struct Binding {
     std::string name;
-    std::ptrdiff_t offset = 0;  // where the member lies in T: identifies it for where()
+    // Where the member lies in T and its size: identify it for where() and check() (a nested
+    // struct and its first member share the offset, not the size).
+    std::ptrdiff_t offset = 0;
+    std::size_t size = 0;
     std::function<ParamSpec(const T&)> spec;
     std::function<void(T&, const ParamSet&, const std::string&)> read;
   };
@@ -362,6 +382,19 @@ class ParamTable {
   template <class Access, class Object>
   static decltype(auto) get(const Access& member, Object& object) {
     return std::invoke(member, object);
+  }
+  // Whether the member takes any count of numbers (a std::vector, a dynamic Eigen matrix).
+  template <class Access>
+  static constexpr bool resizable() {
+    if constexpr (param_detail::IsFields<Access>::value) {
+      return false;
+    } else {
+      using M = MemberType<Access>;
+      if constexpr (param_detail::IsMatrix<M>::value)
+        return M::SizeAtCompileTime < 0;  // Eigen::Dynamic
+      else
+        return param_detail::Resizable<M>::value;
+    }
   }
   template <class Access>
   static std::vector<double> numbersOf(const Access& member, const T& t) {
@@ -380,6 +413,13 @@ class ParamTable {
       param_detail::assignNumbers(get(member, t), v);
     }
   }
+  template <class Access>
+  static std::size_t sizeOf(const Access& member) {
+    if constexpr (param_detail::IsFields<Access>::value)
+      return sizeOf(std::get<0>(member.parts));
+    else
+      return sizeof(MemberType<Access>);
+  }
   template <class... Parts>
   static std::ptrdiff_t offsetOf(const Fields<Parts...>& f) {
     return offsetOf(std::get<0>(f.parts));
@@ -392,6 +432,9 @@ class ParamTable {
   }
 
   ParamTable& add(Binding b) {
+    for (const Binding& other : bindings_)
+      if (other.name == b.name)
+        throw std::logic_error("parameter '" + b.name + "' declared twice in one table");
     bindings_.push_back(std::move(b));
     return *this;
   }

@@ -96,6 +96,8 @@ struct PluginDescriptor {
   std::vector<ParamSpec> params;
   /// When true, keys that are not declared are accepted and left to the plugin (MRPT drivers).
   bool accepts_other_keys = false;
+  /// Keys the plugin had once and where they went: a pipeline still giving one is told so.
+  std::vector<std::pair<std::string, std::string>> moved_keys;
   std::function<std::unique_ptr<Plugin>(const PluginContext&)> create;
 };
 

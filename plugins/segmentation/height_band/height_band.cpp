@@ -35,18 +35,19 @@ const ParamTable<HeightBandParams>& table() {
           .vector(&P::footprint, "footprint", "m", 4, -100, 100,
                   "x_min x_max y_min y_max of a robot-frame box whose points are removed: the "
                   "robot's own body and what it carries (a wheelchair user's legs), which move "
-                  "with the robot; an empty box (the default) removes nothing");
+                  "with the robot; an empty box (the default) removes nothing")
+          .check(&P::footprint, [](const P& p) {
+            const auto& f = p.footprint;
+            return f[0] > f[1] || f[2] > f[3] ? "expected x_min x_max y_min y_max with x_min <= "
+                                                "x_max, y_min <= y_max"
+                                              : "";
+          });
   return t;
 }
 
 class HeightBand : public Segmenter {
  public:
-  explicit HeightBand(const PluginContext& ctx) : p_(table().read(ctx.params)) {
-    const auto& fp = p_.footprint;
-    if (fp[0] > fp[1] || fp[2] > fp[3])
-      throw ConfigError(table().where(ctx.params, &HeightBandParams::footprint) +
-                        ": expected x_min x_max y_min y_max with x_min <= x_max, y_min <= y_max");
-  }
+  explicit HeightBand(const PluginContext& ctx) : p_(table().read(ctx.params)) {}
 
   void process(Frame& f) override {
     const auto& c = f.cloud();

@@ -40,18 +40,18 @@ const ParamTable<LegCirclesParams>& table() {
                 "two legs whose centres are at most this far apart may pair into a person")
           .real(&P::merge_distance, "merge_distance", "m", 0, 1,
                 "legs of different scans (several scanners) whose centres are closer than this "
-                "are one leg, refitted on all their points; 0: never merged");
+                "are one leg, refitted on all their points; 0: never merged")
+          .check(path(&P::leg, &L::r_max), [](const P& p) {
+            return p.leg.r_max < p.leg.r_min
+                       ? "below min_radius (" + shortestNumber(p.leg.r_min) + ")"
+                       : std::string();
+          });
   return t;
 }
 
 class LegCircles : public Segmenter {
  public:
-  explicit LegCircles(const PluginContext& ctx) : LegCircles(table().read(ctx.params)) {
-    if (p_.r_max < p_.r_min)
-      throw ConfigError(
-          table().where(ctx.params, path(&LegCirclesParams::leg, &seg::LegParams::r_max)) + ": " +
-          shortestNumber(p_.r_max) + " is below min_radius " + shortestNumber(p_.r_min));
-  }
+  explicit LegCircles(const PluginContext& ctx) : LegCircles(table().read(ctx.params)) {}
   explicit LegCircles(const LegCirclesParams& p)
       : p_(p.leg), pair_distance_(p.pair_distance), merge_distance_(p.merge_distance) {}
 

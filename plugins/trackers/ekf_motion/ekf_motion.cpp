@@ -63,17 +63,18 @@ const ParamTable<EkfMotionParams>& table() {
           .integer(&P::max_misses, "max_misses", "", 0, 1000,
                    "frames an established track survives without association (P2: 0)")
           .boolean(&P::report_tentative, "report_tentative",
-                   "also write the one-step tracks of T to tracks.csv (status tentative)");
+                   "also write the one-step tracks of T to tracks.csv (status tentative)")
+          .check(&P::q_min, [](const P& p) {
+            return p.q_min > p.q_person
+                       ? "must not exceed q_person (" + shortestNumber(p.q_person) + ")"
+                       : std::string();
+          });
   return t;
 }
 
 class EkfMotion : public Tracker {
  public:
-  explicit EkfMotion(const PluginContext& ctx) : EkfMotion(table().read(ctx.params)) {
-    if (gate_.q_min > gate_.q_person)
-      throw ConfigError(table().where(ctx.params, &EkfMotionParams::q_min) +
-                        ": must not exceed q_person (" + std::to_string(gate_.q_person) + ")");
-  }
+  explicit EkfMotion(const PluginContext& ctx) : EkfMotion(table().read(ctx.params)) {}
   explicit EkfMotion(const EkfMotionParams& p)
       : model_(p.q_theta, p.q_v),
         max_distance_(p.max_distance),

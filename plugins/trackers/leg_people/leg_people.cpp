@@ -360,6 +360,9 @@ PluginDescriptor describe() {
   d.category = Category::Tracker;
   d.doc = "People from leg-height scans: leg and clutter tracks, leg pairs, P3 pose per person";
   d.params = table().specs();
+  d.moved_keys = {{"scan_odometry",
+                   "scan matching is a stage of its own: add [odometry] plugin = scan_odometry "
+                   "(mode = auto|on|off) to [pipeline] stages, before the classifier"}};
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<LegPeople>(ctx);
   };

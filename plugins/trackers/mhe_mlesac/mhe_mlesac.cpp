@@ -46,8 +46,22 @@ const ParamTable<MheMlesacParams>& table() {
   using I = mhe::SolverOptions;
   static const auto t =
       ParamTable<P>()
-          // The IMM's noise `q` is not P0's: its model's noise is system_noise.
-          .include(&P::shape, ShapeTracker::commonTable().without("q"))
+          // The IMM's noise `q` is not P0's: its model's noise is system_noise. The torso band
+          // is the torso's (see MheMlesacParams).
+          .include(&P::shape, ShapeTracker::commonTable()
+                                  .without("q")
+                                  .without("fit_min_height")
+                                  .without("fit_max_height"))
+          .real(path(&P::shape, &ShapeTrackerParams::fit_min_height), "fit_min_height", "m", -10,
+                10, "lowest point height the torso is fitted to (hips of a 1.9 m adult)")
+          .real(path(&P::shape, &ShapeTrackerParams::fit_max_height), "fit_max_height", "m", -10,
+                10, "highest point height the torso is fitted to (shoulders of a 1.6 m adult)")
+          .check(path(&P::shape, &ShapeTrackerParams::fit_min_height),
+                 [](const P& p) {
+                   return p.shape.fit_min_height >= p.shape.fit_max_height
+                              ? "must be below fit_max_height"
+                              : "";
+                 })
           .include(&P::shape, ShapeTracker::ellipseTable())
           .integer(mhe(&M::horizon), "horizon", "frames", 2, 100, "H: the moving horizon (P0)")
           .integer(mhe(&M::subset), "subset", "points", 3, 100000,

@@ -21,7 +21,7 @@ struct LegPoseParams {
   double var_ax = 100, var_ay = 100;  ///< (m/s²)², P3 §2.5's σ²_ax, σ²_ay
   double var_atheta = 9.86960440109;  ///< (rad/s²)², P3's σ²_aθ = π² (to the key's 12 digits)
   double sigma_xy = 0.03;             ///< m, P3's σ_X = σ_Y
-  double sigma_theta = M_PI / 15;     ///< rad, P3's σ_θ
+  double sigma_theta = 12 * (M_PI / 180);  ///< rad, P3's σ_θ = π/15, as the key's 12°
   /// The measurement's standard deviations are multiplied by this when one leg was inferred
   /// (P3: "while increasing the input's variance").
   double inferred_sigma_scale = 3;
