@@ -1,8 +1,11 @@
 // `pedtrack eval`: tracks against truth (CLEAR MOT, errors, IDF1, HOTA, NEES/NIS; Monte Carlo
 // runs pooled), or detections against truth points (precision/recall), the truth being the
 // simulator's truth.csv or, with ROS bag support, a bag's labelled leg positions.
+#include <mrpt/core/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <optional>
@@ -15,6 +18,7 @@
 #include "pedtrack/eval/detection_pr.h"
 #include "pedtrack/eval/evaluate.h"
 #include "pedtrack/eval/segmentation.h"
+#include "pedtrack/outputs.h"
 #include "pedtrack/text.h"
 #ifdef PEDTRACK_WITH_ROSBAG
 #include "eval_bag.h"
@@ -34,6 +38,8 @@ struct EvalArgs {
   long min_visible = 1, following = 0;
   int nis_dof = 2;
   bool has_following = false, legs = false, json = false;
+  std::string angles;       // MIN,MAX: bearing window in degrees (laser frame), bags only
+  bool people_bag = false;  // --truth is a leg_tracker benchmark bag (annotated people)
 };
 
 bool isBag(const std::string& path) {
@@ -85,12 +91,19 @@ void validate(const EvalArgs& a, const po::variables_map& vm) {
           "give one --truth, or one per --tracks (Monte Carlo runs in pairs); got " +
               std::to_string(a.truth.size()) + " and " + std::to_string(a.tracks.size()));
     const bool bag = std::any_of(a.truth.begin(), a.truth.end(), isBag);
-    check(!bag || (a.truth.size() == 1 && a.tracks.size() == 1),
-          "--truth " + a.truth[0] + ": a labelled bag scores one --tracks");
+    check(!bag || std::all_of(a.truth.begin(), a.truth.end(), isBag),
+          "--truth: give bags only, or truth.csv files only");
+    check(!bag || a.people_bag || (a.truth.size() == 1 && a.tracks.size() == 1),
+          "--truth " + a.truth[0] + ": a bag of labelled legs scores one --tracks");
+    check(!bag || a.truth.size() == a.tracks.size(),
+          "bags are pooled in pairs: one --truth BAG per --tracks");
     check(!bag || vm["frame"].defaulted() || a.frame == "sensor",
-          "--frame fixed: a bag's leg labels are in the laser frame (sensor_x, sensor_y)");
-    check(!bag || (!a.has_following && a.range_bins.empty() && a.shape_plot.empty()),
-          "--following, --range-bins and --shape-plot need a truth.csv, not a bag");
+          "--frame fixed: a bag's labels are in the laser frame (sensor_x, sensor_y)");
+    check(!bag || (a.range_bins.empty() && a.shape_plot.empty()),
+          "--range-bins and --shape-plot need a truth.csv, not a bag");
+    check(!bag || a.people_bag || !a.has_following,
+          "--following needs a truth.csv or a bag of annotated people (leg_tracker/Person)");
+    check(a.angles.empty() || a.people_bag, "--angles applies to a bag of annotated people");
     check(!vm.count("hota-distance") || a.hota_distance > 0, "--hota-distance: must be > 0 m");
     check(a.nis_dof >= 1, "--nis-dof: must be >= 1");
     check(!a.legs, "--legs applies to --detections only");
@@ -175,11 +188,109 @@ int evalTracking(const EvalArgs& a) {
   return exit_code::kOk;
 }
 
+// Is --truth a leg_tracker benchmark bag (annotated people, leg_tracker/Person)? With
+// --labels-topic left at its default, when the bag has one Person topic; given, when it is one.
+bool isPeopleBag(const std::string& path, const std::string& labels_topic, bool defaulted) {
+#ifdef PEDTRACK_WITH_ROSBAG
+  const std::string people = bagPeopleTopic(path);
+  return !people.empty() && (defaulted || labels_topic == people);
+#else
+  (void)path, (void)labels_topic, (void)defaulted;
+  return false;
+#endif
+}
+
+// --angles MIN,MAX in degrees; not given when `text` is empty.
+std::optional<std::pair<double, double>> bearingWindow(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  const std::vector<std::string> v = splitList(text);
+  check(v.size() == 2, "--angles: expected MIN,MAX (degrees)");
+  double x[2];
+  for (int i = 0; i < 2; ++i) {
+    char* end = nullptr;
+    x[i] = std::strtod(v[i].c_str(), &end);
+    check(end != v[i].c_str() && *end == '\0' && std::isfinite(x[i]),
+          "--angles: '" + v[i] + "' is not a number (expected MIN,MAX in degrees)");
+  }
+  check(x[0] < x[1] && x[0] >= -180 && x[1] <= 180,
+        "--angles: expected -180 <= MIN < MAX <= 180 (degrees)");
+  return std::make_pair(x[0], x[1]);
+}
+
+// The objects whose bearing from the sensor (laser frame) lies in [min, max] degrees.
+void keepBearings(std::vector<eval::TimedObjects>& frames, std::pair<double, double> window) {
+  for (auto& f : frames)
+    f.objects.erase(std::remove_if(f.objects.begin(), f.objects.end(),
+                                   [&](const eval::Object& o) {
+                                     const double b = std::atan2(o.y, o.x) * 180 / M_PI;
+                                     return b < window.first || b > window.second;
+                                   }),
+                    f.objects.end());
+}
+
+// Tracks against leg_tracker benchmark bags (ICRA 2015), several pooled: its clear_mot.py rules
+// on the people annotated after each scan (laser frame), and the tracks that follow no annotated
+// person per scan (in a following bag only the followed person is annotated).
+int evalTracksOnPeopleBag(const EvalArgs& a) {
+#ifdef PEDTRACK_WITH_ROSBAG
+  const auto window = bearingWindow(a.angles);
+  std::vector<std::vector<eval::EvalFrame>> runs;
+  std::size_t scans = 0;
+  for (std::size_t i = 0; i < a.truth.size(); ++i) {
+    BagPeople people = readBagPeople(a.truth[i], a.topic, a.labels_topic);
+    auto tracks = eval::objectsByTime(readObjectTable(a.tracks[i]), eval::CoordFrame::Sensor, 0,
+                                      kTimeTolerance);
+    if (window) {
+      keepBearings(people.scans, *window);
+      keepBearings(tracks, *window);
+    }
+    scans += people.scans.size();
+    runs.push_back(eval::alignFrames(people.scans, tracks, kTimeTolerance));
+  }
+  eval::TrackingOptions opt;
+  opt.threshold = a.threshold;
+  if (a.has_following) opt.following = a.following;
+  opt.hota_distance = a.hota_distance > 0 ? a.hota_distance : a.threshold;
+  opt.nis_dof = a.nis_dof;
+  const eval::TrackingReport rep = eval::evaluateTracking(runs, opt);
+  std::size_t non_target = 0;  // every track row that matches no annotated person
+  for (const auto& frames : runs)
+    non_target += eval::clearMot(frames, {a.threshold, std::nullopt}).counts.false_positives;
+  EvalSetup s;
+  s.threshold = a.threshold;
+  s.frame = "sensor";
+  s.following = opt.following;
+  s.hota_distance = opt.hota_distance;
+  s.truth_source = "bag";
+  const double per_scan = scans ? double(non_target) / double(scans) : NAN;
+  if (a.json) {
+    std::cout << trackingJson(rep, s,
+                              {{"scans", std::to_string(scans)},
+                               {"non_target_track_rows", std::to_string(non_target)},
+                               {"non_target_tracks_per_scan",
+                                std::isfinite(per_scan) ? mrpt::format("%.10g", per_scan) : "null"},
+                               {"angles", a.angles.empty() ? "null" : "\"" + a.angles + "\""}});
+  } else {
+    std::cout << trackingText(rep, s);
+    std::printf(
+        "\nBenchmark bags: %zu, %zu scans%s; tracks on no annotated person: %zu rows, "
+        "%.3f per scan\n",
+        a.truth.size(), scans, a.angles.empty() ? "" : (", bearings " + a.angles).c_str(),
+        non_target, per_scan);
+  }
+  return exit_code::kOk;
+#else
+  (void)a;
+  return exit_code::kBadInput;
+#endif
+}
+
 // Tracks against a labelled bag's legs (eval/leg_coverage.h): leg_tracker's bags label legs,
 // not people, so no CLEAR MOT; the share of labelled legs with a track near them, and the
 // track rows near none.
 int evalTracksOnBag(const EvalArgs& a) {
 #ifdef PEDTRACK_WITH_ROSBAG
+  if (a.people_bag) return evalTracksOnPeopleBag(a);
   const auto legs = readBagLabels(a.truth[0], a.topic, a.labels_topic).scans;
   const auto tracks = eval::objectsByTime(readObjectTable(a.tracks[0]), eval::CoordFrame::Sensor, 0,
                                           kTimeTolerance);
@@ -272,8 +383,12 @@ int evalCommand(const std::vector<std::string>& args) {
       "threshold", po::value(&a.threshold),
       "largest match distance, m (default 0.75 for tracks, 0.1 for detections, 0.35 for tracks "
       "against a bag's legs)")(
-      "following", po::value(&a.following),
-      "score only this truth id and ignore false positives (person following)")(
+      "following", po::value(&a.following)->implicit_value(0),
+      "score only this truth id and ignore false positives (person following); without an id "
+      "(or 0): every annotated truth is the followed person (a benchmark following bag)")(
+      "angles", po::value(&a.angles),
+      "MIN,MAX: a benchmark bag's bearing window in degrees (laser frame): truths and tracks "
+      "outside it are dropped (the benchmark's moving-robot files: -80,12)")(
       "min-visible", po::value(&a.min_visible)->default_value(1),
       "truths with fewer visible points are unscored: they may absorb a match, never miss")(
       "hota-distance", po::value(&a.hota_distance),
@@ -285,8 +400,9 @@ int evalCommand(const std::vector<std::string>& args) {
       "detections: take the truth points from truth.csv's leg columns")(
       "topic", po::value(&a.topic), "bag truth: the scan topic (default: the only LaserScan one)")(
       "labels-topic", po::value(&a.labels_topic)->default_value("/leg_cluster_positions"),
-      "bag truth: the geometry_msgs/PoseArray topic of labelled legs; none: the bag has no "
-      "people (every detection is a false positive)")(
+      "bag truth: the geometry_msgs/PoseArray topic of labelled legs, or the leg_tracker/Person "
+      "topic of annotated people (a benchmark bag's only Person topic is taken by default); "
+      "none: the bag has no people (every detection is a false positive)")(
       "range-bin", po::value(&a.range_bin)->default_value(1.0),
       "detections: width of the distance bins of recall by range, m")(
       "truth-points", po::value(&a.truth_points),
@@ -321,8 +437,13 @@ int evalCommand(const std::vector<std::string>& args) {
     return exit_code::kOk;
   a.has_following = vm.count("following") > 0;
   const bool bag_tracks = !a.tracks.empty() && std::any_of(a.truth.begin(), a.truth.end(), isBag);
-  // Against labelled legs a track (the person's centre) is within half a stride of each leg.
-  if (!vm.count("threshold")) a.threshold = a.tracks.empty() ? 0.1 : bag_tracks ? 0.35 : 0.75;
+  a.people_bag =
+      bag_tracks && isPeopleBag(a.truth.front(), a.labels_topic, vm["labels-topic"].defaulted());
+  if (a.people_bag && vm["labels-topic"].defaulted()) a.labels_topic.clear();
+  // Against labelled legs a track (the person's centre) is within half a stride of each leg;
+  // against annotated people, the benchmark's 0.75 m.
+  if (!vm.count("threshold"))
+    a.threshold = a.tracks.empty() ? 0.1 : bag_tracks && !a.people_bag ? 0.35 : 0.75;
   validate(a, vm);
   if (!a.truth_points.empty()) return evalSegmentation(a);
   if (bag_tracks) return evalTracksOnBag(a);

@@ -8,18 +8,38 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <set>
 
 #include "pedtrack/bag_check.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/ros_checked_message.h"
 #include "pedtrack/text.h"
+#include "ros_message_decode.h"
 
 namespace pedtrack::cli {
 namespace {
 
 const std::string kLaserScan = "sensor_msgs/LaserScan";
 const std::string kPoseArray = "geometry_msgs/PoseArray";
+const std::string kPerson = "leg_tracker/Person";
+
+void openBag(rosbag::Bag& bag, const std::string& path) {
+  try {
+    checkBagStructure(path);  // rosbag_storage trusts the lengths in the file
+    bag.open(path, rosbag::bagmode::Read);
+  } catch (const std::exception& e) {
+    throw ConfigError("--truth: cannot open bag '" + path + "': " + oneLine(e.what()));
+  }
+}
+
+std::set<std::string> topicsOf(const rosbag::Bag& bag, const std::string& datatype) {
+  std::set<std::string> topics;
+  rosbag::View all(bag);
+  for (const rosbag::ConnectionInfo* c : all.getConnections())
+    if (c->datatype == datatype) topics.insert(c->topic);
+  return topics;
+}
 
 std::string chooseScanTopic(const rosbag::Bag& bag, const std::string& path,
                             const std::string& wanted) {
@@ -59,12 +79,7 @@ std::vector<eval::Object> toObjects(const geometry_msgs::PoseArray& a) {
 BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
                         const std::string& labels_topic) {
   rosbag::Bag bag;
-  try {
-    checkBagStructure(path);  // rosbag_storage trusts the lengths in the file
-    bag.open(path, rosbag::bagmode::Read);
-  } catch (const std::exception& e) {
-    throw ConfigError("--truth: cannot open bag '" + path + "': " + oneLine(e.what()));
-  }
+  openBag(bag, path);
   BagLabels out;
   out.scan_topic = chooseScanTopic(bag, path, scan_topic);
   const bool unlabelled = labels_topic == "none";  // a bag with no people: no truth anywhere
@@ -106,6 +121,62 @@ BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
     auto it = stamped.lower_bound(t - 1e-4);
     if (it != stamped.end() && it->first <= t + 1e-4) to.objects = it->second;
     out.scans.push_back(std::move(to));
+  }
+  std::stable_sort(
+      out.scans.begin(), out.scans.end(),
+      [](const eval::TimedObjects& a, const eval::TimedObjects& b) { return a.t < b.t; });
+  return out;
+}
+
+std::string bagPeopleTopic(const std::string& path) {
+  rosbag::Bag bag;
+  openBag(bag, path);
+  const std::set<std::string> topics = topicsOf(bag, kPerson);
+  return topics.size() == 1 ? *topics.begin() : std::string();
+}
+
+BagPeople readBagPeople(const std::string& path, const std::string& scan_topic,
+                        const std::string& people_topic) {
+  rosbag::Bag bag;
+  openBag(bag, path);
+  BagPeople out;
+  out.scan_topic = chooseScanTopic(bag, path, scan_topic);
+  const std::set<std::string> people = topicsOf(bag, kPerson);
+  out.people_topic = people_topic;
+  if (out.people_topic.empty() && people.size() == 1) out.people_topic = *people.begin();
+  if (!people.count(out.people_topic))
+    throw ConfigError(path + ": no " + kPerson + " topic" +
+                      (out.people_topic.empty() ? "" : " '" + out.people_topic + "'") +
+                      " (the annotated people; see --labels-topic)");
+  std::unique_ptr<RosMessageSchema> schema;
+  try {
+    rosbag::View view(
+        bag, rosbag::TopicQuery(std::vector<std::string>{out.scan_topic, out.people_topic}));
+    for (const rosbag::MessageInstance& m : view) {
+      if (m.getTopic() == out.people_topic) {
+        if (!schema) schema = std::make_unique<RosMessageSchema>(kPerson, m.getMessageDefinition());
+        if (out.scans.empty()) continue;  // before the first scan: annotates nothing
+        std::vector<std::uint8_t> bytes(m.size());
+        ros::serialization::OStream os(bytes.data(), static_cast<std::uint32_t>(bytes.size()));
+        m.write(os);
+        const auto f = schema->numbers(bytes.data(), bytes.size());
+        const auto x = f.find("pose.position.x"), y = f.find("pose.position.y"), id = f.find("id");
+        if (x == f.end() || y == f.end() || id == f.end())
+          throw DataError(out.people_topic + ": a " + kPerson + " without pose.position or id");
+        eval::Object o;
+        o.id = long(id->second);
+        o.x = x->second;
+        o.y = y->second;
+        o.range = std::hypot(o.x, o.y);  // laser frame
+        out.scans.back().objects.push_back(o);
+      } else if (auto scan = checkedInstantiate<sensor_msgs::LaserScan>(m)) {
+        out.scans.push_back({scan->header.stamp.toSec(), {}});
+      }
+    }
+  } catch (const ConfigError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw DataError(path + ": " + oneLine(e.what()));
   }
   std::stable_sort(
       out.scans.begin(), out.scans.end(),

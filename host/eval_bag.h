@@ -22,4 +22,20 @@ struct BagLabels {
 BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
                         const std::string& labels_topic);
 
+/// The people of a leg_tracker benchmark bag (ICRA 2015): each message of `people_topic`
+/// (leg_tracker/Person: pose, id; decoded from the bag's own message definition) is written
+/// right after the scan it annotates, so it belongs to the last scan before it in bag order, as
+/// the benchmark's clear_mot.py reads them. One entry per scan of `scan_topic` (empty: the only
+/// LaserScan topic), t = its header stamp, the people at their pose's x, y (laser frame), id =
+/// the person's id. `people_topic` empty: the bag's only leg_tracker/Person topic.
+struct BagPeople {
+  std::string scan_topic, people_topic;
+  std::vector<eval::TimedObjects> scans;
+};
+BagPeople readBagPeople(const std::string& path, const std::string& scan_topic,
+                        const std::string& people_topic);
+
+/// The bag's topic of leg_tracker/Person messages, or "" when it has none.
+std::string bagPeopleTopic(const std::string& path);
+
 }  // namespace pedtrack::cli

@@ -80,7 +80,7 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
     const auto& es = f.estimates;
     ++c.frames;
     auto scored = [&](const Object& o) {
-      return o.scored && (!opt.following || o.id == *opt.following);
+      return o.scored && (!opt.following || *opt.following == 0 || o.id == *opt.following);
     };
     std::vector<int> t2e(tr.size(), -1), e2t(es.size(), -1);
     // 1. Remembered correspondences that still hold.

@@ -22,7 +22,8 @@ namespace pedtrack::eval {
 struct ClearMotOptions {
   double threshold = 0.75;  ///< m, largest distance of a match (inclusive)
   /// Following mode: only this truth id is scored (others become unscored, so they still absorb
-  /// their tracks) and false positives are not counted.
+  /// their tracks) and false positives are not counted. 0: every truth is the followed person
+  /// (a benchmark following recording annotates only them).
   std::optional<long> following;
 };
 
