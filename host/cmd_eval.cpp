@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <iostream>
 #include <optional>
 
@@ -236,10 +237,12 @@ int evalTracksOnPeopleBag(const EvalArgs& a) {
   const auto window = bearingWindow(a.angles);
   std::vector<std::vector<eval::EvalFrame>> runs;
   std::size_t scans = 0;
+  // The frames point into their track tables' rows: every table lives until the scoring is done.
+  std::deque<ObjectTable> tables;
   for (std::size_t i = 0; i < a.truth.size(); ++i) {
     BagPeople people = readBagPeople(a.truth[i], a.topic, a.labels_topic);
-    auto tracks = eval::objectsByTime(readObjectTable(a.tracks[i]), eval::CoordFrame::Sensor, 0,
-                                      kTimeTolerance);
+    tables.push_back(readObjectTable(a.tracks[i]));
+    auto tracks = eval::objectsByTime(tables.back(), eval::CoordFrame::Sensor, 0, kTimeTolerance);
     if (window) {
       keepBearings(people.scans, *window);
       keepBearings(tracks, *window);
@@ -292,8 +295,8 @@ int evalTracksOnBag(const EvalArgs& a) {
 #ifdef PEDTRACK_WITH_ROSBAG
   if (a.people_bag) return evalTracksOnPeopleBag(a);
   const auto legs = readBagLabels(a.truth[0], a.topic, a.labels_topic).scans;
-  const auto tracks = eval::objectsByTime(readObjectTable(a.tracks[0]), eval::CoordFrame::Sensor, 0,
-                                          kTimeTolerance);
+  const ObjectTable table = readObjectTable(a.tracks[0]);
+  const auto tracks = eval::objectsByTime(table, eval::CoordFrame::Sensor, 0, kTimeTolerance);
   const eval::LegCoverage c =
       eval::legCoverage(eval::alignFrames(legs, tracks, kTimeTolerance), a.threshold);
   EvalSetup setup;

@@ -40,12 +40,17 @@ enum class CoordFrame { Fixed, Sensor };  ///< x,y columns or sensor_x,sensor_y 
 /// Throws ConfigError when the sensor-frame columns are missing or empty.
 std::vector<TimedObjects> objectsByTime(const ObjectTable& table, CoordFrame frame,
                                         long min_visible = 1, double tolerance = 1e-4);
+/// The objects point into the table's rows: a temporary table would leave them dangling.
+std::vector<TimedObjects> objectsByTime(ObjectTable&& table, CoordFrame frame, long min_visible = 1,
+                                        double tolerance = 1e-4) = delete;
 
 /// The leg points of truth.csv rows (left_leg_x/y, right_leg_x/y; fixed frame): ids 2·id (left)
 /// and 2·id + 1 (right), scored as their person is. Legs with empty columns are skipped.
 /// Throws ConfigError when the table lacks the leg columns.
 std::vector<TimedObjects> legsByTime(const ObjectTable& truth, long min_visible = 1,
                                      double tolerance = 1e-4);
+std::vector<TimedObjects> legsByTime(ObjectTable&& truth, long min_visible = 1,
+                                     double tolerance = 1e-4) = delete;
 
 /// One frame per distinct time of either list (each sorted by t): the union of truth and
 /// estimate times, where two times within `tolerance` seconds are one frame.
