@@ -161,12 +161,14 @@ TEST_CASE("too few points give the constant-velocity prediction", "[scan_odometr
     prev = last;
     last = odo.update(scan(w, kStart + truth(0.1 * k), rng), 2.0 + 0.1 * k);
     CHECK(odo.started());  // from the first scan with min_points on
+    CHECK(odo.lastMatched());
   }
   const long matched = odo.matched();
   const CPose2D d = last - prev;
   // One scan later, empty: last ⊕ d. Two scans later, too few points (a scanner blinded):
   // last ⊕ 2d, extrapolated from the last accepted pose, not from the first prediction.
   const CPose2D p1 = odo.update({}, 3.1);
+  CHECK_FALSE(odo.lastMatched());  // a prediction, not a match
   const CPose2D want1 = last + d;
   CHECK(p1.x() == Approx(want1.x()).margin(1e-9));
   CHECK(p1.y() == Approx(want1.y()).margin(1e-9));
@@ -183,6 +185,7 @@ TEST_CASE("too few points give the constant-velocity prediction", "[scan_odometr
   // The prediction was good, so the next full scan matches again, on the true track.
   const CPose2D p3 = odo.update(scan(w, kStart + truth(1.3), rng), 3.3);
   CHECK(odo.matched() == matched + 1);
+  CHECK(odo.lastMatched());
   CHECK((p3 - truth(1.3)).norm() < 0.03);
 }
 

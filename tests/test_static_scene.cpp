@@ -98,6 +98,24 @@ TEST_CASE("a wall is static once seen for persist seconds and not before", "[sta
   CHECK(test::readFile(png).size() > 100);
 }
 
+TEST_CASE("forget() drops what the grid learned; it learns again from scratch", "[static_scene]") {
+  // The robot moved by an unknown amount (Frame::motion_unknown): the wall may be anywhere now.
+  StaticScene ss;
+  const World w = wallAhead();
+  double t = kT0;
+  for (; t < kT0 + 3.2; t += kDt) ss.update(scanFrame(w, t), {});
+  REQUIRE(ss.isStatic(kWallX, 0, t));
+  ss.forget();
+  CHECK_FALSE(ss.isStatic(kWallX, 0, t));
+  CHECK(ss.occupancy(kWallX, 0) == Approx(0.5));  // unknown
+  // Seen again, it takes persist seconds again.
+  const double t1 = t;
+  for (; t < t1 + 2.9; t += kDt) ss.update(scanFrame(w, t), {});
+  CHECK_FALSE(ss.isStatic(kWallX, 0, t));
+  for (; t < t1 + 3.2; t += kDt) ss.update(scanFrame(w, t), {});
+  CHECK(ss.isStatic(kWallX, 0, t));
+}
+
 TEST_CASE("a tracked person standing still for a minute never becomes static", "[static_scene]") {
   StaticScene ss;
   World w = wallAhead();

@@ -103,6 +103,12 @@ struct Frame {
   /// identity only because nothing said otherwise (a lone live sensor, a bag without poses),
   /// and a robot that moves makes the world move in the fixed frame.
   bool has_odometry = false;
+  /// An odometry stage could not tell how the robot moved up to this frame (scan matching found
+  /// too little to match, outdoors, or most of the view hidden) and the source gives no
+  /// odometry: robot_pose is a guess, and what stands still in the world may move in the fixed
+  /// frame. A tracker then learns nothing as static scene and judges no motion in that frame.
+  /// False also when nothing could tell (no odometry stage): the robot is then taken as still.
+  bool motion_unknown = false;
   mrpt::poses::CPose3D sensor_pose;  ///< first range sensor in the fixed frame
   /// Every range sensor that contributed to the frame, one entry per range observation, in
   /// observation order (several scanners merged into one frame, each with its own pose);

@@ -63,6 +63,7 @@ struct ScanOdometry::Impl {
   long matched = 0, rejected = 0, skipped = 0;
   std::deque<std::size_t> counts;           // thinned points of the last recent_scans scans
   int rejected_run = 0;                     // rejections in a row
+  bool last_matched = false;                // the last update() placed its scan by a match
   std::unordered_set<std::uint64_t> cells;  // thinning grid, reused (clear() keeps the buckets)
 
   explicit Impl(const ScanOdometryOptions& o) : opt(o) {
@@ -186,6 +187,7 @@ struct ScanOdometry::Impl {
 
   CPose2D update(const std::vector<Eigen::Vector2d>& pts, double t) {
     const CPose2D pred = predict(t);
+    last_matched = false;
     thin(pts, opt.decimation_cell, scan);
     const bool few = suddenlySparse(scan.size());
     if (scan.size() < opt.min_points) return pose = pred;
@@ -196,6 +198,7 @@ struct ScanOdometry::Impl {
     if (!have_keyframe) {
       takeKeyframe(pts, pred, false);
       accept(pred, t);
+      last_matched = true;  // the origin: where the robot is, by definition
       return pose = pred;
     }
     // CICP estimates the pose of m2 (this scan) in m1's frame (the keyframe, or for a sparse
@@ -213,6 +216,7 @@ struct ScanOdometry::Impl {
                     !tooFast(est, t);
     if (ok) {
       ++matched;
+      last_matched = true;
       rejected_run = 0;
       accept(est, t);
       pose = est;
@@ -253,6 +257,9 @@ long ScanOdometry::matched() const {
 }
 long ScanOdometry::rejected() const {
   return impl_->rejected;
+}
+bool ScanOdometry::lastMatched() const {
+  return impl_->last_matched;
 }
 long ScanOdometry::skipped() const {
   return impl_->skipped;

@@ -95,6 +95,10 @@ class ScanOdometry {
   /// match count in neither.
   long matched() const;
   long rejected() const;
+  /// The last update() placed its scan by an accepted match (or it was the first scan, the
+  /// origin). False: too few points, suddenly sparse, or the match rejected; the pose returned
+  /// is the constant-velocity prediction, a guess.
+  bool lastMatched() const;
   /// Scans not matched for having far fewer points than the recent ones (min_points_share).
   long skipped() const;
 

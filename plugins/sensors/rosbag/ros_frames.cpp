@@ -1,7 +1,6 @@
 #include "ros_frames.h"
 
 #include <mrpt/maps/CSimplePointsMap.h>
-#include <mrpt/ros1bridge/laser_scan.h>
 #include <mrpt/ros1bridge/point_cloud2.h>
 
 #include <algorithm>
@@ -14,14 +13,50 @@ namespace pedtrack::rosbag_source {
 
 mrpt::obs::CObservation2DRangeScan::Ptr scanToObservation(const sensor_msgs::LaserScan& scan,
                                                           const mrpt::poses::CPose3D& mount) {
-  auto o = mrpt::obs::CObservation2DRangeScan::Create();
-  if (!mrpt::ros1bridge::fromROS(scan, mount, *o)) return nullptr;
-  // mrpt::ros1bridge drops returns beyond 95% of range_max; ROS defines a return as valid
-  // anywhere in [range_min, range_max], and a person at 5.4 m of a 5.6 m scanner is real.
-  for (std::size_t k = 0; k < scan.ranges.size(); ++k) {
-    const float r = scan.ranges[k];
-    o->setScanRangeValidity(k, std::isfinite(r) && r >= scan.range_min && r <= scan.range_max);
+  // Written here rather than with mrpt::ros1bridge::fromROS (MRPT 2.5.8): MRPT's scan spans
+  // [-aperture/2, aperture/2] about the sensor's x axis, and fromROS fits a scan that is not
+  // symmetric about it (a Hokuyo's [-34.5 deg, 51.3 deg] in leg_tracker's benchmark) by shifting
+  // the beams and wrapping the ones that fall off one end round to the other: returns from the
+  // left end appeared on the right, and the validity this function set by ROS index no longer
+  // matched the ranges (the benchmark's followed person lost in a third of the scans). Here the
+  // scan is padded with invalid beams to be symmetric, and the part of a beam step that padding
+  // cannot absorb turns the beams (the observation's sensorPose, on top of `mount`).
+  const std::size_t n = scan.ranges.size();
+  double inc = scan.angle_increment;
+  if (n < 2 || !std::isfinite(scan.angle_min) || !std::isfinite(inc) || inc == 0) return nullptr;
+  std::vector<float> ranges(scan.ranges.begin(), scan.ranges.end());
+  double lo = scan.angle_min;
+  if (inc < 0) {  // clockwise beams: the same scan counter-clockwise
+    std::reverse(ranges.begin(), ranges.end());
+    lo = scan.angle_min + double(n - 1) * inc;
+    inc = -inc;
   }
+  const double hi = lo + double(n - 1) * inc;
+  if (hi - lo > 2 * M_PI + inc) return nullptr;
+  // Invalid beams below lo (pad_lo) or above hi (pad_hi) centre the scan on the x axis.
+  const long shift = std::lround((hi + lo) / inc);
+  const std::size_t pad_lo = shift > 0 ? std::size_t(shift) : 0;
+  const std::size_t pad_hi = shift < 0 ? std::size_t(-shift) : 0;
+  const std::size_t total = n + pad_lo + pad_hi;
+  auto o = mrpt::obs::CObservation2DRangeScan::Create();
+  o->rightToLeft = true;
+  o->aperture = float(double(total - 1) * inc);
+  o->maxRange = scan.range_max;
+  o->sensorLabel = scan.header.frame_id;
+  o->resizeScan(total);
+  for (std::size_t j = 0; j < total; ++j) {
+    o->setScanRange(j, 0);
+    o->setScanRangeValidity(j, false);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const float r = ranges[k];
+    const bool valid = std::isfinite(r) && r >= scan.range_min && r <= scan.range_max;
+    o->setScanRange(pad_lo + k, valid ? r : 0);
+    o->setScanRangeValidity(pad_lo + k, valid);
+  }
+  // ROS beam k is at lo + k·inc; MRPT's beam pad_lo + k at -aperture/2 + (pad_lo + k)·inc.
+  const double turn = lo + 0.5 * double(o->aperture) - double(pad_lo) * inc;
+  o->sensorPose = mount + mrpt::poses::CPose3D(0, 0, 0, turn, 0, 0);
   return o;
 }
 
@@ -43,7 +78,12 @@ double assembleFrame(const std::vector<MountedObservation>& group, Frame& frame)
   frame.has_odometry = newest.robot_known;
   for (const MountedObservation& m : group) {
     const mrpt::poses::CPose3D in_fixed = m.robot + m.mount;
-    m.obs->setSensorPose(&m == &newest ? m.mount : in_fixed - frame.robot_pose);
+    // How the observation's own axes sit on its sensor's (a scan's beams turned by a fraction of
+    // a step: scanToObservation); the identity for most.
+    mrpt::poses::CPose3D own;
+    m.obs->getSensorPose(own);
+    const mrpt::poses::CPose3D axes = own - m.mount;
+    m.obs->setSensorPose((&m == &newest ? m.mount : in_fixed - frame.robot_pose) + axes);
     frame.observations.push_back(m.obs);
     frame.sensors.push_back({m.topic, in_fixed});
   }

@@ -147,6 +147,11 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "moved 45 deg or more round it, is a track left on a pole or a table leg: "
                 "that leg track is let go and never a person's leg again (one seen only in "
                 "returns of no circle, support_gate, no longer holds the person up); 0: off")
+          .real(&T::follow_confirm_time, "follow_confirm_time", "s", 0, 3600,
+                "with follow on and nobody followed, a tentative person inside follow_zone "
+                "whose legs look like legs (leg_score) and were both seen over this long is "
+                "confirmed without walking (the person to follow stands in front of the "
+                "robot); 0: off")
           .boolean(path(&T::pose, &LegPoseParams::zoning, &ZoningParams::resolve_swaps),
                    "resolve_swaps",
                    "a turn in place of over 90° between two scans is read as the person's "
@@ -218,11 +223,26 @@ class LegPeople : public Tracker {
 
   void process(Frame& f) override {
     std::vector<LegDetection> legs = detections(f);
+    // The robot may have moved by an unknown amount (scan matching found nothing to match): what
+    // the grid learned may now lie anywhere, and a person who keeps pace with the robot would
+    // stand still in this frame. The grid forgets and learns nothing until the motion is known.
+    if (scene_ && f.motion_unknown) scene_->forget();
     std::function<bool(double, double)> is_static;
     if (scene_)
       is_static = [&](double x, double y) { return scene_->isStatic(x, y, f.t, static_radius_); };
-    tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f));
-    if (scene_) scene_->update(f, tracker_.occupiedByPeople());
+    // With follow on and nobody followed, the zone in front of the robot is where the person to
+    // follow is expected.
+    std::function<bool(double, double)> expected;
+    if (follow_ == "nearest" && followed_ == 0) {
+      const mrpt::poses::CPose3D inv = -f.robot_pose;
+      expected = [this, inv](double x, double y) {
+        double rx, ry, rz;
+        inv.composePoint(x, y, 0, rx, ry, rz);
+        return inFollowZone(rx, ry);
+      };
+    }
+    tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f), !f.motion_unknown, expected);
+    if (scene_ && !f.motion_unknown) scene_->update(f, tracker_.occupiedByPeople());
     const auto people = tracker_.people();
     // For the next frame's stages (scan matching leaves people's returns out): everyone but
     // those kept only for re-identification.
@@ -337,10 +357,14 @@ class LegPeople : public Tracker {
       if (!followable(s)) continue;
       double x, y, z;
       inv.composePoint(s.p.x(), s.p.y(), 0, x, y, z);
-      if (x < follow_zone_[0] || x > follow_zone_[1] || std::abs(y) > follow_zone_[2]) continue;
+      if (!inFollowZone(x, y)) continue;
       const double d = std::hypot(x, y);
       if (d < best) best = d, followed_ = s.id;
     }
+  }
+
+  bool inFollowZone(double x, double y) const {  // robot frame
+    return x >= follow_zone_[0] && x <= follow_zone_[1] && std::abs(y) <= follow_zone_[2];
   }
 
   LegPeopleTracker tracker_;

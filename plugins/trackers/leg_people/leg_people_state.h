@@ -84,6 +84,11 @@ struct LegPeopleTracker::Person {
   bool was_seen = false;
   // Range of the leg vector's sagittal part while tentative (both legs seen, moving).
   double stride_min = INFINITY, stride_max = -INFINITY;
+  // The legs' separation when both were seen (t, metres; oldest first) over the last
+  // kGaitWindow: how a tentative person shows gait where the robot's motion is unknown.
+  std::deque<std::pair<double, double>> separations;
+  // Since when both legs have been seen in every scan where a person is expected (NaN: not now).
+  double expected_since = NAN;
   double score_sum = 0;
   int score_n = 0;
   bool confirmed = false, seen = false;

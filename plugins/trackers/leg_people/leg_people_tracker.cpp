@@ -14,6 +14,9 @@ namespace pedtrack::track {
 namespace {
 // m/s: below this the filter's velocity (and so the sagittal axis) is mostly noise.
 constexpr double kStrideMinSpeed = 0.2;
+// s: the window over which the legs' separation must swing where the robot's motion is unknown
+// (confirm_stride): about half a gait cycle and more, too short for noise to add up.
+constexpr double kGaitWindow = 1.0;
 // m: a leg object that stays within this of where it was first holds a person up "standing" on
 // the static scene.
 constexpr double kOneLegStill = 0.1;
@@ -45,8 +48,11 @@ LegPeopleTracker::~LegPeopleTracker() = default;
 
 void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
                             const std::function<bool(double, double)>& is_static,
-                            const std::vector<LegReturn>& returns) {
+                            const std::vector<LegReturn>& returns, bool motion_known,
+                            const std::function<bool(double, double)>& expected) {
   for (const LegDetection& l : legs) classified_ = classified_ || l.scored;
+  motion_known_ = motion_known;
+  expected_ = expected;
   const double dt = started_ ? std::clamp(t - t_, 0.0, 1.0) : 0.0;
   started_ = true;
   t_ = t;
@@ -328,6 +334,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
         P.origin = {P.est.x(), P.est.y()};
         P.travelled = 0;
         P.stride_min = INFINITY, P.stride_max = -INFINITY;
+        P.separations.clear();
       }
       (side == 0 ? l : r) = {true, best->pos()};
     }
@@ -360,7 +367,9 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     if (P.est.legsSwapped()) std::swap(P.left, P.right);
     const Eigen::Vector2d c(P.est.x(), P.est.y());
     // Travel counts only where a leg was seen: a coasting filter that extrapolates a jump (a leg
-    // re-associated to clutter) would otherwise confirm a ghost without any measurement.
+    // re-associated to clutter) would otherwise confirm a ghost without any measurement. Nor
+    // where the robot's motion is unknown: the way starts again where the person is.
+    if (!motion_known_) P.origin = c;
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
     if (P.seen) P.seen_at = c, P.seen_v = P.est.velocity();
     if (P.seen && P.confirmed) P.tracked += dt_person;
@@ -374,6 +383,19 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       P.stride_max = std::max(P.stride_max, sagittal);
     }
     const bool strode = p_.confirm_stride <= 0 || P.stride_max - P.stride_min >= p_.confirm_stride;
+    // Gait without a frame: the distance between the legs, which neither the robot's turn nor
+    // its travel changes, swinging as they scissor (see confirm_stride).
+    if (!P.confirmed && l.seen && r.seen) {
+      P.separations.emplace_back(t, (l.p - r.p).norm());
+      while (t - P.separations.front().first > kGaitWindow) P.separations.pop_front();
+    }
+    bool gait_alone = false;
+    if (!motion_known_ && !P.confirmed && p_.confirm_stride > 0 && P.separations.size() >= 3) {
+      const auto [lo, hi] =
+          std::minmax_element(P.separations.begin(), P.separations.end(),
+                              [](const auto& a, const auto& b) { return a.second < b.second; });
+      gait_alone = hi->second - lo->second >= p_.confirm_stride;
+    }
     // Nor is a person confirmed while faster than a brisk walk: that speed is, far more often
     // than a runner, the filter reacting to a leg that jumped to a neighbouring object. Legs the
     // classifier is sure of need less travel: a person standing by the robot, shifting their
@@ -383,9 +405,19 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     const bool sure = classified_ && p_.sure_leg_score < 1 && score >= p_.sure_leg_score;
     const double travel =
         sure ? std::min(p_.sure_confirm_travel, p_.confirm_travel) : p_.confirm_travel;
-    if (!P.confirmed && P.seen && strode && P.travelled >= travel &&
-        v.norm() <= p_.max_confirm_speed &&
-        (score >= p_.leg_score || P.travelled >= p_.moving_confirm_travel)) {
+    // Where a person is expected (a following robot's zone), legs seen standing are enough.
+    const bool both_expected =
+        !P.confirmed && l.seen && r.seen && expected_ && expected_(c.x(), c.y());
+    if (!both_expected)
+      P.expected_since = NAN;
+    else if (std::isnan(P.expected_since))
+      P.expected_since = t;
+    const bool stood_expected = p_.follow_confirm_time > 0 && both_expected &&
+                                t - P.expected_since >= p_.follow_confirm_time;
+    const bool walked = strode && P.travelled >= travel &&
+                        (score >= p_.leg_score || P.travelled >= p_.moving_confirm_travel);
+    if (!P.confirmed && P.seen && v.norm() <= p_.max_confirm_speed &&
+        (walked || ((gait_alone || stood_expected) && score >= p_.leg_score))) {
       P.confirmed = true;
       // From now on the walker's own (smoother) noise: see legPeoplePoseDefaults().
       P.est.retune(p_.pose);

@@ -104,6 +104,13 @@ struct LegPeopleParams {
   /// both legs seen) must have swung over at least this range before they are confirmed. Two
   /// objects that move rigidly together (a wall or chair slid by the robot's own motion, scans
   /// merged out of step) never do; one step of a walker swings it by ~0.5 m. 0: off.
+  /// Where the robot's motion is unknown (scan matching found nothing to match, outdoors) a
+  /// person's motion in the fixed frame is no evidence, and one who keeps pace with the robot
+  /// moves nowhere in it: a tentative person whose legs' mean score reaches leg_score is then
+  /// confirmed once the distance between their legs changed by this much within one second,
+  /// which a rigid pair turned or slid by the robot never does, whatever the robot did. On
+  /// leg_tracker's outdoor following recording (both legs seen, thigh height) that distance
+  /// ranged over 0.14 m in the median second, over 0.10 m in 80 % of them.
   double confirm_stride = 0.1;
   double reacquire_spread =
       0.5;  ///< m/s, a confirmed person's missing-leg gate widens this fast while unseen
@@ -199,6 +206,12 @@ struct LegPeopleParams {
   /// it (a person would have shown their second leg), and then for one seen only in returns of
   /// no circle (support_gate): see checkOneLegStand. 0: off, both.
   double one_leg_stand = 3;
+  /// s: a tentative person where a person is expected (step's `expected`: a following robot's
+  /// zone in front of it) is confirmed once both legs were seen, looking like legs, over this
+  /// long. The person a robot is asked to follow stands in front of it before walking off, and
+  /// where scan matching finds nothing to match (outdoors) the robot cannot tell a person who
+  /// walks with it from one who stands. 0: off.
+  double follow_confirm_time = 0.5;
 };
 
 /// A scan return that is part of no leg circle: fixed-frame position and the sensor seeing it.
@@ -241,9 +254,17 @@ class LegPeopleTracker {
   /// One scan at time t. `is_static(x, y)` (may be empty) says whether a fixed-frame point lies
   /// in the static scene, where no person may start.
   /// `returns`: the scan's returns that are part of no leg circle (support_gate).
+  /// `motion_known` false: the robot may have moved by an unknown amount up to this scan
+  /// (Frame::motion_unknown), so the way a person moved in the fixed frame says nothing; a
+  /// tentative person is then confirmed on their gait alone (confirm_stride).
+  /// `expected(x, y)` (may be empty): whether a fixed-frame place is where a person is expected,
+  /// the zone in front of a robot asked to follow someone; a tentative person there whose legs
+  /// look like legs (mean score ≥ leg_score) and were both seen over follow_confirm_time is
+  /// confirmed without walking (the person about to be followed stands in front of the robot).
   void step(double t, const std::vector<LegDetection>& legs,
             const std::function<bool(double, double)>& is_static,
-            const std::vector<LegReturn>& returns = {});
+            const std::vector<LegReturn>& returns = {}, bool motion_known = true,
+            const std::function<bool(double, double)>& expected = {});
 
   std::vector<PersonState> people() const;
   /// Fixed-frame positions of every confirmed person seen within max_coast, and their legs:
@@ -289,7 +310,9 @@ class LegPeopleTracker {
   long next_object_ = 0, next_person_ = 0;
   double t_ = 0;
   bool started_ = false;
-  bool classified_ = false;  // some leg so far was scored by a classifier (sure_leg_score)
+  bool classified_ = false;   // some leg so far was scored by a classifier (sure_leg_score)
+  bool motion_known_ = true;  // this scan's: see step()
+  std::function<bool(double, double)> expected_;  // this scan's: see step()
 };
 
 }  // namespace pedtrack::track

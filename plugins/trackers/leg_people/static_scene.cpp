@@ -125,6 +125,13 @@ StaticScene::StaticScene(const Options& o) : opt_(o) {
   if (!opt_.prior_map.empty()) prior_ = loadMap(opt_.prior_map);
 }
 
+void StaticScene::forget() {
+  if (!started_) return;
+  started_ = false;
+  grid_ = COccupancyGridMap2D();
+  runs_.clear();
+}
+
 bool StaticScene::beginUpdate(double t, double sensor_x, double sensor_y) {
   if (calls_++ % opt_.update_every != 0) return false;
   if (!started_) {

@@ -108,6 +108,10 @@ class StaticScene {
   /// the surface it was fitted to).
   bool isStatic(double x, double y, double t, double radius = 0) const;
 
+  /// Forgets everything the grid learned (the prior map stays): the fixed frame moved by an
+  /// unknown amount (Frame::motion_unknown), so what was learned may now lie anywhere.
+  void forget();
+
   /// Occupancy probability of the local grid at (x, y) (0.5 = unknown, also outside the grid).
   double occupancy(double x, double y) const;
 

@@ -1,0 +1,90 @@
+// leg_people where the robot's motion is unknown (Frame::motion_unknown: scan matching found
+// nothing to match): a person walking with the robot stands still in the tracking frame, and
+// clutter moves in it as the robot drives. A tentative person is then confirmed by their legs'
+// scissoring alone (confirm_stride), never by travel; a rigid pair slid and turned by the robot
+// never is; a person standing where one is expected (a following robot's zone) is confirmed
+// after follow_confirm_time.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include "leg_people/leg_people_tracker.h"
+
+using namespace pedtrack::track;
+
+namespace {
+
+const Eigen::Vector2d kSensor{0, 0};
+
+// Two legs scored 0.6 at `centre`, `separation` apart along the direction `angle`.
+std::vector<LegDetection> pair(const Eigen::Vector2d& centre, double separation, double angle) {
+  const Eigen::Vector2d u(std::cos(angle), std::sin(angle));
+  return {{centre + 0.5 * separation * u, 0.6, kSensor, 0},
+          {centre - 0.5 * separation * u, 0.6, kSensor, 1}};
+}
+
+bool anyConfirmed(const LegPeopleTracker& tr) {
+  for (const PersonState& s : tr.people())
+    if (s.confirmed) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("where the motion is unknown a walker keeping pace is confirmed by gait alone",
+          "[legs]") {
+  // 1.5 m ahead, keeping pace with the robot: no travel in the frame. The legs scissor, their
+  // separation swinging 0.15-0.35 m at 0.9 Hz (thigh height, as in leg_tracker's outdoor
+  // following recording).
+  LegPeopleTracker tr{LegPeopleParams{}};
+  double confirmed_at = NAN;
+  for (double t = 0; t < 3 && std::isnan(confirmed_at); t += 0.1) {
+    const double sep = 0.25 + 0.1 * std::sin(2 * M_PI * 0.9 * t);
+    tr.step(t, pair({1.5, 0}, sep, 0), {}, {}, false);
+    if (anyConfirmed(tr)) confirmed_at = t;
+  }
+  REQUIRE(std::isfinite(confirmed_at));
+  CHECK(confirmed_at < 1.5);
+  // The same walker with the motion known is not: they moved nowhere.
+  LegPeopleTracker known{LegPeopleParams{}};
+  for (double t = 0; t < 3; t += 0.1)
+    known.step(t, pair({1.5, 0}, 0.25 + 0.1 * std::sin(2 * M_PI * 0.9 * t), 0), {}, {}, true);
+  CHECK_FALSE(anyConfirmed(known));
+}
+
+TEST_CASE("where the motion is unknown a rigid pair slid and turned by the robot is not confirmed",
+          "[legs]") {
+  // Two poles 0.3 m apart, sliding past at 1 m/s while the robot turns at 30 deg/s: in the frame
+  // they travel 3 m and their leg vector turns 90 deg, but the distance between them stays.
+  LegPeopleTracker tr{LegPeopleParams{}};
+  for (double t = 0; t < 3; t += 0.1) {
+    tr.step(t, pair({2.0 - t, 1.0}, 0.3, M_PI / 6 * t), {}, {}, false);
+    CHECK_FALSE(anyConfirmed(tr));
+  }
+}
+
+TEST_CASE("a person standing where one is expected is confirmed after follow_confirm_time",
+          "[legs]") {
+  // Standing still 1.2 m in front of a following robot, legs 0.2 m apart.
+  auto expected = [](double x, double y) { return x > 0.3 && x < 3 && std::abs(y) < 1; };
+  LegPeopleParams p;
+  LegPeopleTracker tr(p);
+  double confirmed_at = NAN;
+  for (double t = 0; t < 2 && std::isnan(confirmed_at); t += 0.1) {
+    tr.step(t, pair({1.2, 0.1}, 0.2, M_PI / 2), {}, {}, false, expected);
+    if (anyConfirmed(tr)) confirmed_at = t;
+  }
+  REQUIRE(std::isfinite(confirmed_at));
+  CHECK(confirmed_at >= p.follow_confirm_time - 1e-9);
+  CHECK(confirmed_at < p.follow_confirm_time + 0.25);
+  // Outside the zone, or with follow_confirm_time 0, they stay tentative.
+  LegPeopleTracker outside(p);
+  for (double t = 0; t < 2; t += 0.1)
+    outside.step(t, pair({4.0, 0.1}, 0.2, M_PI / 2), {}, {}, false, expected);
+  CHECK_FALSE(anyConfirmed(outside));
+  p.follow_confirm_time = 0;
+  LegPeopleTracker off(p);
+  for (double t = 0; t < 2; t += 0.1)
+    off.step(t, pair({1.2, 0.1}, 0.2, M_PI / 2), {}, {}, false, expected);
+  CHECK_FALSE(anyConfirmed(off));
+}
