@@ -189,6 +189,24 @@ TEST_CASE("too few points give the constant-velocity prediction", "[scan_odometr
   CHECK((p3 - truth(1.3)).norm() < 0.03);
 }
 
+TEST_CASE("matches failing beyond predict_for hold the pose where the prediction reached",
+          "[scan_odometry]") {
+  // Outdoors nothing matches for seconds: the prediction is carried predict_for (0.5 s) past the
+  // last match, then held; carried on, a speed nothing measured moved the tracking frame away.
+  const World w = room();
+  std::mt19937 rng(5);
+  ScanOdometry odo;
+  auto truth = [](double t) { return CPose2D(0.8 * t, 0, 0); };
+  for (int k = 0; k <= 10; ++k) odo.update(scan(w, kStart + truth(0.1 * k), rng), 0.1 * k);
+  REQUIRE(odo.lastMatched());
+  const CPose2D last = odo.pose();
+  CPose2D p;
+  for (int k = 1; k <= 30; ++k) p = odo.update({}, 1.0 + 0.1 * k);  // 3 s of nothing to match
+  CHECK_FALSE(odo.lastMatched());
+  CHECK(p.x() == Approx(last.x() + 0.8 * 0.5).margin(0.02));  // 0.5 s at 0.8 m/s, then held
+  CHECK(std::abs(p.y()) < 0.02);
+}
+
 TEST_CASE("a scan that matches nothing is rejected, the prediction used", "[scan_odometry]") {
   const World w = room();
   std::mt19937 rng(5);

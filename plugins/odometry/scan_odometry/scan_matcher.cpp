@@ -106,7 +106,7 @@ struct ScanOdometry::Impl {
     if (n_accepted == 0) return pose;
     if (n_accepted < 2 || !(last_t > prev_t)) return last_pose;
     const CPose2D d = last_pose - prev_pose;  // prev⁻¹ ⊕ last
-    const double s = (t - last_t) / (last_t - prev_t);
+    const double s = std::min(t - last_t, opt.predict_for) / (last_t - prev_t);
     return last_pose + CPose2D(d.x() * s, d.y() * s, d.phi() * s);
   }
 
@@ -229,11 +229,13 @@ struct ScanOdometry::Impl {
     // the one before was rejected too: a single odd scan (someone right in front of a scanner)
     // must not become the reference the next scans fail against, but when matching keeps
     // failing the keyframe is stale (the view changed) and the robot must re-anchor somewhere.
+    // Failing for longer than the prediction is trusted, the pose is held and would never get
+    // far from the keyframe: the robot re-anchors where it is.
     const CPose2D rel = pose - kf_pose;
-    if ((ok || rejected_run >= 2) &&
-        (rel.norm() >= opt.keyframe_distance ||
-         std::abs(mrpt::math::wrapToPi(rel.phi())) >= opt.keyframe_angle))
-      takeKeyframe(pts, pose, !ok);
+    const bool far = rel.norm() >= opt.keyframe_distance ||
+                     std::abs(mrpt::math::wrapToPi(rel.phi())) >= opt.keyframe_angle;
+    const bool lost = rejected_run >= 2 && t - last_t > opt.predict_for;
+    if ((ok || rejected_run >= 2) && (far || lost)) takeKeyframe(pts, pose, !ok);
     return pose;
   }
 };

@@ -70,6 +70,14 @@ struct ScanOdometryOptions {
   std::size_t sparse_points = 300;
   /// Keyframes matched together for a sparse scan (1: the newest only).
   std::size_t local_keyframes = 6;
+  /// The constant-velocity prediction stands in for matches that fail (s past the last accepted
+  /// one); beyond that the pose is held where the prediction reached rather than carried on at
+  /// a speed nothing measured, and the motion is unknown (the stage's Frame::motion_unknown).
+  /// A wheelchair's speed changes little in half a second (0.5 m/s² for 0.5 s: 6 cm); outdoors
+  /// (leg_tracker's benchmark following recording) matches fail for many seconds, and the
+  /// prediction carried the tracking frame off at 2.5 m/s. Matching that keeps failing after
+  /// that long re-anchors on the current scan (a new keyframe where the pose is held).
+  double predict_for = 0.5;
   /// Points are thinned to one per cell (m) of a grid in the robot frame before matching: near
   /// returns of a scanner are far denser than needed and would dominate cost and the fit.
   double decimation_cell = 0.05;

@@ -22,10 +22,6 @@ enum class Mode { Auto, On, Off };
 
 struct ScanOdometryParams {
   Mode mode = Mode::Auto;
-  // s: how long the constant-velocity prediction stands in for matches that fail before the
-  // robot's motion is unknown (Frame::motion_unknown). A wheelchair's speed changes little in
-  // half a second (0.5 m/s² for 0.5 s: 6 cm); outdoors the matches fail for many seconds.
-  double predict_for = 0.5;
   ScanOdometryOptions icp;  // its members' comments say why each default is what it is
 };
 
@@ -39,10 +35,10 @@ const ParamTable<ScanOdometryParams>& table() {
                   "a lone live scanner), and only once the match has moved 0.1 m or 3 deg from "
                   "the start (a standing scanner stays exact); on: always, replacing the "
                   "source's odometry; off: never")
-          .real(&P::predict_for, "predict_for", "s", 0, 3600,
+          .real(path(&P::icp, &O::predict_for), "predict_for", "s", 0, 3600,
                 "the constant-velocity prediction stands in for matches that fail this long; "
-                "beyond it the robot's motion is unknown (no scan matched: outdoors, the view "
-                "hidden) and a tracker learns no static scene and judges no motion meanwhile")
+                "beyond it the pose is held and the robot's motion is unknown (outdoors, the "
+                "view hidden): a tracker learns no static scene and judges no motion meanwhile")
           .real(path(&P::icp, &O::keyframe_distance), "keyframe_distance", "m", 0.01, 100,
                 "a new keyframe once the robot moved this far from the current one")
           .real(path(&P::icp, &O::keyframe_angle), "keyframe_angle", "deg", 0.1, 180,
@@ -122,8 +118,11 @@ class ScanOdometryStage : public Odometry {
     // The constant-velocity prediction stands in for a failed match for a moment (a scan mostly
     // hidden by passers-by); matching that keeps failing (outdoors: nothing to match) leaves the
     // motion unknown. With the source's odometry (mode on) it is known whatever the match did.
+    // Unknown also on the first frame matched again: the pose it jumps from was a guess.
     if (matcher_->lastMatched()) last_matched_t_ = f.t;
-    f.motion_unknown = !f.has_odometry && !(f.t - last_matched_t_ <= p_.predict_for);
+    const bool guessed = !f.has_odometry && !(f.t - last_matched_t_ <= p_.icp.predict_for);
+    f.motion_unknown = guessed || last_guessed_;
+    last_guessed_ = guessed;
     // auto: a scanner that has not moved stays exactly where it started. Scan matching jitters
     // by 2-3 cm on a standing scanner, which blurs a static-scene grid and costs tracks; the
     // matched pose is used from the moment the robot has clearly moved (and from then on).
@@ -152,6 +151,7 @@ class ScanOdometryStage : public Odometry {
   mrpt::poses::CPose3D last_robot_;  // the last frame's scan-matched robot pose
   bool moved_ = false;               // scan matching has seen the robot leave where it started
   double last_matched_t_ = NAN;      // when a scan was last placed by a match
+  bool last_guessed_ = false;        // the last frame's pose was a guess (motion unknown)
   std::optional<mrpt::poses::CPose3D> start_;  // the robot pose at the scan odometry's origin
 };
 
