@@ -88,3 +88,36 @@ TEST_CASE("a person standing where one is expected is confirmed after follow_con
     off.step(t, pair({1.2, 0.1}, 0.2, M_PI / 2), {}, {}, false, expected);
   CHECK_FALSE(anyConfirmed(off));
 }
+
+TEST_CASE("where the motion is unknown a lost person is re-identified only where predicted",
+          "[legs]") {
+  // A walker confirmed on the way (motion known), then unseen for 1.5 s: a new leg pair 0.9 m
+  // beside their prediction is them again when the frame is fixed (they may have stepped
+  // aside), but not when the frame moves by an unknown amount (clutter streams past there).
+  auto run = [](bool known) {
+    LegPeopleTracker tr{LegPeopleParams{}};
+    double t = 0;
+    for (; t < 3; t += 0.1) {
+      const double x = -1.5 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      tr.step(t, pair({x, 0}, 0.2 + std::abs(lp), 0), {}, {}, true);
+    }
+    long id = 0;
+    for (const PersonState& s : tr.people())
+      if (s.confirmed) id = s.id;
+    REQUIRE(id > 0);
+    for (; t < 4.5; t += 0.1) tr.step(t, {}, {}, {}, known);
+    const Eigen::Vector2d predicted = [&] {
+      for (const PersonState& s : tr.people())
+        if (s.id == id) return s.p;
+      return Eigen::Vector2d(NAN, NAN);
+    }();
+    REQUIRE(predicted.allFinite());
+    for (int k = 0; k < 3; ++k, t += 0.1)
+      tr.step(t, pair(predicted + Eigen::Vector2d(0, 0.9), 0.25, 0), {}, {}, known);
+    for (const PersonState& s : tr.people())
+      if (s.id == id && s.seen) return true;
+    return false;
+  };
+  CHECK(run(true));
+  CHECK_FALSE(run(false));
+}

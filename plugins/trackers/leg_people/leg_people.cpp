@@ -95,14 +95,17 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "re-identified (reidentify_speed) without a second confirmation")
           .real(&T::reacquire_spread, "reacquire_spread", "m/s", 0, 100,
                 "while a confirmed person is unseen (occluded in a crowd), the gate in which "
-                "a free leg becomes theirs widens this fast")
+                "a free leg becomes theirs widens this fast (not where the robot's motion is "
+                "unknown)")
           .real(&T::reacquire_max, "reacquire_max", "m", 0, 10,
                 "... by at most this much beyond leg_gate")
-          .real(&T::reidentify_speed, "reidentify_speed", "m/s", 0, 100,
-                "a confirmed person lost from sight takes back a new leg pair within "
-                "leg_gate plus this speed times their time unseen of where they were "
-                "predicted (keeps their id through occlusions), or a lone leg "
-                "(reidentify_leg_scans); 0: off, both")
+          .real(
+              &T::reidentify_speed, "reidentify_speed", "m/s", 0, 100,
+              "a confirmed person lost from sight takes back a new leg pair within "
+              "leg_gate plus this speed times their time unseen of where they were "
+              "predicted (keeps their id through occlusions), or a lone leg "
+              "(reidentify_leg_scans); where the robot's motion is unknown, within leg_gate only; "
+              "0: off, both")
           .real(&T::reidentify_max, "reidentify_max", "m", 0, 100,
                 "... that radius grows by at most this much beyond leg_gate")
           .integer(&T::reidentify_leg_scans, "reidentify_leg_scans", "scans", 0, 1000,
@@ -136,11 +139,12 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "the pose estimator's orientation")
           .real(&T::report_heading_window, "report_heading_window", "s", 0.01, 60,
                 "see report_heading_speed")
-          .real(&T::support_gate, "support_gate", "m", 0, 10,
-                "a confirmed person's leg no leg circle shows is still seen where scan "
-                "returns of no leg circle (one or two beams: far, or all but hidden; many "
-                "that fit no circle: wide trousers) lie within this of where the gait "
-                "predicts it, off the static scene; 0: off")
+          .real(
+              &T::support_gate, "support_gate", "m", 0, 10,
+              "a confirmed person's leg no leg circle shows is still seen where scan "
+              "returns of no leg circle (one or two beams: far, or all but hidden; many "
+              "that fit no circle: wide trousers) lie within this of where the gait "
+              "predicts it, off the static scene (not where the robot's motion is unknown); 0: off")
           .real(&T::one_leg_stand, "one_leg_stand", "s", 0, 3600,
                 "a confirmed person held up this long by one leg track alone, standing "
                 "(within 0.1 m) on the static scene, or (within 0.25 m) while the scanner "

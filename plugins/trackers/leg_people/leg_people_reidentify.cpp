@@ -10,6 +10,9 @@ namespace pedtrack::track {
 // Re-identification's radius for a confirmed person unseen since q.last_seen: leg_gate plus
 // reidentify_speed times the time unseen, at most reidentify_max more.
 double LegPeopleTracker::reidentifyRadius(const Person& q, double t) const {
+  // Where the robot's motion is unknown the frame itself moves by an unknown amount: how far a
+  // lost person may have walked says nothing, and clutter streams past their prediction.
+  if (!motion_known_) return p_.pose.leg_gate;
   return p_.pose.leg_gate + std::min(p_.reidentify_speed * (t - q.last_seen), p_.reidentify_max);
 }
 

@@ -193,7 +193,7 @@ std::optional<LegSeen> LegPeopleTracker::legFromReturns(
     const Person& q, double t, const Eigen::Vector2d& want, const Eigen::Vector2d& other,
     const std::function<bool(double, double)>& is_static, const std::vector<LegReturn>& returns,
     Eigen::Vector2d& sensor) const {
-  if (p_.support_gate <= 0 || !q.confirmed || lostLong(q, t)) return std::nullopt;
+  if (p_.support_gate <= 0 || !q.confirmed || lostLong(q, t) || !motion_known_) return std::nullopt;
   Eigen::Vector2d sum = Eigen::Vector2d::Zero(), seen_by = Eigen::Vector2d::Zero();
   int n = 0;
   for (const LegReturn& r : returns) {
@@ -314,7 +314,10 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       // Behind an occlusion a confirmed person's prediction grows uncertain: the gate widens
       // with the time unseen (a tentative person must still prove itself on its own legs).
       double bd = p_.pose.leg_gate;
-      if (P.confirmed) bd += std::min(p_.reacquire_spread * (t - P.last_seen), p_.reacquire_max);
+      // Not where the robot's motion is unknown: the gait's prediction is then made in a frame
+      // that moves by an unknown amount, and clutter streams past it.
+      if (P.confirmed && motion_known_)
+        bd += std::min(p_.reacquire_spread * (t - P.last_seen), p_.reacquire_max);
       for (auto& o : objects_) {
         if (o->person >= 0 || o->det < 0 || o->shunned) continue;
         const double d = (o->pos() - want).norm();
