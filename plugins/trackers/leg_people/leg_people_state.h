@@ -69,6 +69,7 @@ struct LegPeopleTracker::Person {
   Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   double tracked = 0;  // s seen while confirmed (coastLimit)
+  double hidden = 0;   // s unseen while something nearer the scanner hid their place
   // one_leg_stand: since when (NaN: not now) one leg object alone has held the person up
   // standing, and where, tested two ways (checkOneLegStand).
   OneLegStand on_static, in_view;

@@ -49,10 +49,12 @@ LegPeopleTracker::~LegPeopleTracker() = default;
 void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
                             const std::function<bool(double, double)>& is_static,
                             const std::vector<LegReturn>& returns, bool motion_known,
-                            const std::function<bool(double, double)>& expected) {
+                            const std::function<bool(double, double)>& expected,
+                            const std::function<bool(double, double)>& occluded) {
   for (const LegDetection& l : legs) classified_ = classified_ || l.scored;
   motion_known_ = motion_known;
   expected_ = expected;
+  occluded_ = occluded;
   const double dt = started_ ? std::clamp(t - t_, 0.0, 1.0) : 0.0;
   started_ = true;
   t_ = t;
@@ -127,6 +129,13 @@ bool LegPeopleTracker::lostLong(const Person& q, double t) const {
 double LegPeopleTracker::coastLimit(const Person& q) const {
   if (!q.confirmed) return p_.max_coast;
   return std::clamp(q.tracked, p_.max_coast, std::max(p_.max_coast, p_.max_coast_confirmed));
+}
+
+bool LegPeopleTracker::expired(const Person& q, double t) const {
+  if (q.last_seen == -INFINITY) return true;
+  const double unseen = t - q.last_seen, limit = coastLimit(q);
+  if (p_.max_coast_occluded <= 0) return unseen > limit;
+  return unseen - q.hidden > limit || unseen > std::max(limit, p_.max_coast_occluded);
 }
 
 namespace {
@@ -376,6 +385,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
     if (P.seen) P.seen_at = c, P.seen_v = P.est.velocity();
     if (P.seen && P.confirmed) P.tracked += dt_person;
+    // Unseen where something nearer hides them: their absence is explained (max_coast_occluded).
+    if (P.seen)
+      P.hidden = 0;
+    else if (P.confirmed && occluded_ && occluded_(P.est.x(), P.est.y()))
+      P.hidden += dt_person;
     if (P.seen) recordCentre(P, t, c);
     updateLostVelocity(P);
     const Eigen::Vector2d v = P.est.velocity();
@@ -472,14 +486,12 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       }
   // Deleted people free their legs.
   for (auto& person : people_) {
-    if (t - person->last_seen <= coastLimit(*person)) continue;
+    if (!expired(*person, t)) continue;
     for (auto& o : objects_)
       if (o->person == person->id) o->person = -1;
   }
   people_.erase(std::remove_if(people_.begin(), people_.end(),
-                               [&](const std::unique_ptr<Person>& q) {
-                                 return t - q->last_seen > coastLimit(*q);
-                               }),
+                               [&](const std::unique_ptr<Person>& q) { return expired(*q, t); }),
                 people_.end());
 }
 

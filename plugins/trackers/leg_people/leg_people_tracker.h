@@ -212,6 +212,12 @@ struct LegPeopleParams {
   /// where scan matching finds nothing to match (outdoors) the robot cannot tell a person who
   /// walks with it from one who stands. 0: off.
   double follow_confirm_time = 0.5;
+  /// s: a confirmed person unseen while something nearer the scanner hides where they are
+  /// predicted (a pillar, a passer-by) is kept this long at most, however briefly they had been
+  /// tracked; time unseen in plain view still counts towards max_coast / max_coast_confirmed.
+  /// Their absence is explained, and a person who waits behind a pillar comes back on their
+  /// track (re-identification). 0: off.
+  double max_coast_occluded = 30;
 };
 
 /// A scan return that is part of no leg circle: fixed-frame position and the sensor seeing it.
@@ -261,10 +267,13 @@ class LegPeopleTracker {
   /// the zone in front of a robot asked to follow someone; a tentative person there whose legs
   /// look like legs (mean score ≥ leg_score) and were both seen over follow_confirm_time is
   /// confirmed without walking (the person about to be followed stands in front of the robot).
+  /// `occluded(x, y)` (may be empty): whether something nearer the scanner hides a fixed-frame
+  /// place this scan (max_coast_occluded).
   void step(double t, const std::vector<LegDetection>& legs,
             const std::function<bool(double, double)>& is_static,
             const std::vector<LegReturn>& returns = {}, bool motion_known = true,
-            const std::function<bool(double, double)>& expected = {});
+            const std::function<bool(double, double)>& expected = {},
+            const std::function<bool(double, double)>& occluded = {});
 
   std::vector<PersonState> people() const;
   /// Fixed-frame positions of every confirmed person seen within max_coast, and their legs:
@@ -277,6 +286,9 @@ class LegPeopleTracker {
   struct Person;
   bool legLike(const Object& o) const;
   double coastLimit(const Person& q) const;
+  /// q is deleted: merged or on the static scene, or unseen too long (coastLimit, counting time
+  /// hidden behind something nearer only up to max_coast_occluded).
+  bool expired(const Person& q, double t) const;
   bool lostLong(const Person& q, double t) const;
   /// q seen at c: the reported heading (report_heading_speed), then c recorded.
   void recordCentre(Person& q, double t, const Eigen::Vector2d& c) const;
@@ -313,6 +325,7 @@ class LegPeopleTracker {
   bool classified_ = false;   // some leg so far was scored by a classifier (sure_leg_score)
   bool motion_known_ = true;  // this scan's: see step()
   std::function<bool(double, double)> expected_;  // this scan's: see step()
+  std::function<bool(double, double)> occluded_;  // this scan's: see step()
 };
 
 }  // namespace pedtrack::track
