@@ -1,6 +1,6 @@
 // Private to the leg_people tracker's sources: the state of a tracked leg-like object and of a
-// person (two leg objects and their pose), shared by leg_people_tracker.cpp and
-// leg_people_reidentify.cpp.
+// person (two leg objects and their pose), shared by leg_people_tracker.cpp,
+// leg_people_reidentify.cpp and leg_people_support.cpp.
 #pragma once
 
 #include <algorithm>
@@ -14,6 +14,15 @@
 #include "pedtrack/track/kalman.h"
 
 namespace pedtrack::track {
+
+// Objects are appended with increasing ids and erased in place, so a tracker's objects stay
+// sorted by id: the object with `id`, or null.
+template <class V>
+auto findObject(V& objects, long id) -> decltype(objects.front().get()) {
+  auto it = std::lower_bound(objects.begin(), objects.end(), id,
+                             [](const auto& o, long v) { return o->id < v; });
+  return it != objects.end() && (*it)->id == id ? it->get() : nullptr;
+}
 
 struct LegPeopleTracker::Object {
   long id = 0;
