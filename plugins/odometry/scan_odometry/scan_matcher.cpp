@@ -110,6 +110,9 @@ struct ScanOdometry::Impl {
     return last_pose + CPose2D(d.x() * s, d.y() * s, d.phi() * s);
   }
 
+  // No scan matched yet, or none for longer than the prediction is trusted.
+  bool guessing(double t) const { return n_accepted == 0 || !(t - last_t <= opt.predict_for); }
+
   // Whether reaching p at t from the last accepted pose is faster than max_speed.
   bool tooFast(const CPose2D& p, double t) const {
     if (!(opt.max_speed > 0) || n_accepted == 0 || !(t > last_t)) return false;
@@ -234,7 +237,7 @@ struct ScanOdometry::Impl {
     const CPose2D rel = pose - kf_pose;
     const bool far = rel.norm() >= opt.keyframe_distance ||
                      std::abs(mrpt::math::wrapToPi(rel.phi())) >= opt.keyframe_angle;
-    const bool lost = rejected_run >= 2 && t - last_t > opt.predict_for;
+    const bool lost = rejected_run >= 2 && guessing(t);
     if ((ok || rejected_run >= 2) && (far || lost)) takeKeyframe(pts, pose, !ok);
     return pose;
   }
@@ -262,6 +265,9 @@ long ScanOdometry::rejected() const {
 }
 bool ScanOdometry::lastMatched() const {
   return impl_->last_matched;
+}
+bool ScanOdometry::guessing(double t) const {
+  return impl_->guessing(t);
 }
 long ScanOdometry::skipped() const {
   return impl_->skipped;

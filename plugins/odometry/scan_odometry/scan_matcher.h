@@ -107,6 +107,8 @@ class ScanOdometry {
   /// origin). False: too few points, suddenly sparse, or the match rejected; the pose returned
   /// is the constant-velocity prediction, a guess.
   bool lastMatched() const;
+  /// At time t the pose is a guess: no scan matched yet, or none for longer than predict_for.
+  bool guessing(double t) const;
   /// Scans not matched for having far fewer points than the recent ones (min_points_share).
   long skipped() const;
 

@@ -119,8 +119,7 @@ class ScanOdometryStage : public Odometry {
     // hidden by passers-by); matching that keeps failing (outdoors: nothing to match) leaves the
     // motion unknown. With the source's odometry (mode on) it is known whatever the match did.
     // Unknown also on the first frame matched again: the pose it jumps from was a guess.
-    if (matcher_->lastMatched()) last_matched_t_ = f.t;
-    const bool guessed = !f.has_odometry && !(f.t - last_matched_t_ <= p_.icp.predict_for);
+    const bool guessed = !f.has_odometry && matcher_->guessing(f.t);
     f.motion_unknown = guessed || last_guessed_;
     last_guessed_ = guessed;
     // auto: a scanner that has not moved stays exactly where it started. Scan matching jitters
@@ -150,7 +149,6 @@ class ScanOdometryStage : public Odometry {
   std::optional<ScanOdometry> matcher_;
   mrpt::poses::CPose3D last_robot_;  // the last frame's scan-matched robot pose
   bool moved_ = false;               // scan matching has seen the robot leave where it started
-  double last_matched_t_ = NAN;      // when a scan was last placed by a match
   bool last_guessed_ = false;        // the last frame's pose was a guess (motion unknown)
   std::optional<mrpt::poses::CPose3D> start_;  // the robot pose at the scan odometry's origin
 };

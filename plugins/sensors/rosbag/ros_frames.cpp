@@ -44,15 +44,11 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanToObservation(const sensor_msgs::Las
   o->maxRange = scan.range_max;
   o->sensorLabel = scan.header.frame_id;
   o->resizeScan(total);
-  for (std::size_t j = 0; j < total; ++j) {
-    o->setScanRange(j, 0);
-    o->setScanRangeValidity(j, false);
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    const float r = ranges[k];
+  for (std::size_t j = 0; j < total; ++j) {  // beam j is ROS beam j - pad_lo, or padding
+    const float r = j >= pad_lo && j < pad_lo + n ? ranges[j - pad_lo] : NAN;
     const bool valid = std::isfinite(r) && r >= scan.range_min && r <= scan.range_max;
-    o->setScanRange(pad_lo + k, valid ? r : 0);
-    o->setScanRangeValidity(pad_lo + k, valid);
+    o->setScanRange(j, valid ? r : 0);
+    o->setScanRangeValidity(j, valid);
   }
   // ROS beam k is at lo + k·inc; MRPT's beam pad_lo + k at -aperture/2 + (pad_lo + k)·inc.
   const double turn = lo + 0.5 * double(o->aperture) - double(pad_lo) * inc;

@@ -322,35 +322,32 @@ class LegPeople : public Tracker {
   std::vector<LegReturn> returnsOutsideLegs(const Frame& f) const {
     if (!support_) return {};
     const std::vector<std::int32_t> labels = runLabels(f).labels;
-    const auto& cloud = f.cloud();
     std::vector<LegReturn> out;
     for (std::size_t i = 0; i < labels.size(); ++i) {
       if (labels[i] != run_label::kUnclustered) continue;  // a leg's, the ground's, removed
-      float x, y, z;
-      cloud.getPoint(i, x, y, z);
       LegReturn r;
-      double gx, gy, gz;
-      f.robot_pose.composePoint(x, y, z, gx, gy, gz);
-      r.p = {gx, gy};
+      r.p = fixedPoint(f, i);
       r.sensor = nearestSensor(f, r.p);
       out.push_back(r);
     }
     return out;
   }
 
+  // Cloud point i of the frame in the fixed frame (x, y).
+  static Eigen::Vector2d fixedPoint(const Frame& f, std::size_t i) {
+    float x, y, z;
+    f.cloud().getPoint(i, x, y, z);
+    double gx, gy, gz;
+    f.robot_pose.composePoint(x, y, z, gx, gy, gz);
+    return {gx, gy};
+  }
+
   // The frame's kept returns in the fixed frame.
   static std::vector<Eigen::Vector2d> keptPoints(const Frame& f) {
-    const auto& cloud = f.cloud();
     std::vector<Eigen::Vector2d> out;
-    out.reserve(cloud.size());
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-      if (!f.isKept(i)) continue;
-      float x, y, z;
-      cloud.getPoint(i, x, y, z);
-      double gx, gy, gz;
-      f.robot_pose.composePoint(x, y, z, gx, gy, gz);
-      out.emplace_back(gx, gy);
-    }
+    out.reserve(f.cloud().size());
+    for (std::size_t i = 0; i < f.cloud().size(); ++i)
+      if (f.isKept(i)) out.push_back(fixedPoint(f, i));
     return out;
   }
 

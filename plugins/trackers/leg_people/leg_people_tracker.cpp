@@ -116,7 +116,6 @@ double LegPeopleTracker::coastLimit(const Person& q) const {
 }
 
 bool LegPeopleTracker::expired(const Person& q, double t) const {
-  if (q.last_seen == -INFINITY) return true;
   const double unseen = t - q.last_seen, limit = coastLimit(q);
   if (p_.max_coast_occluded <= 0) return unseen > limit;
   return unseen - q.hidden > limit || unseen > std::max(limit, p_.max_coast_occluded);
