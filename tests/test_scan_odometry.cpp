@@ -3,7 +3,8 @@
 // robot does not drift, scans with too few points (or from elsewhere) give the constant-velocity
 // prediction; in an open space with a few poles and walkers (sparse scans) the drive still ends
 // within 5 cm / 0.3°; a scan with far fewer points than the recent ones is not matched, nor is a
-// match turned more than max_turn_step from the prediction, or faster than max_speed, accepted.
+// match turned more than max_turn_step or moved more than max_step from the prediction, or faster
+// than max_speed, accepted; the prediction's velocity is the mean over 0.3 s.
 // Prints the cost of update().
 #include <mrpt/math/wrap2pi.h>
 
@@ -154,17 +155,18 @@ TEST_CASE("too few points give the constant-velocity prediction", "[scan_odometr
   CHECK(odo.update({}, 1.0) == CPose2D());
   CHECK(odo.update({V2(1, 0), V2(2, 0)}, 1.05) == CPose2D());
   CHECK_FALSE(odo.started());
-  // Moving at 0.5 m/s and turning at 10°/s: the last two scans set the velocity.
+  // Moving at 0.5 m/s and turning at 10°/s: the last 0.3 s of scans set the velocity.
   auto truth = [](double t) { return CPose2D(0.5 * t, 0, 10 * kDeg * t); };
-  CPose2D prev, last;
+  std::vector<CPose2D> poses;
   for (int k = 0; k <= 10; ++k) {
-    prev = last;
-    last = odo.update(scan(w, kStart + truth(0.1 * k), rng), 2.0 + 0.1 * k);
+    poses.push_back(odo.update(scan(w, kStart + truth(0.1 * k), rng), 2.0 + 0.1 * k));
     CHECK(odo.started());  // from the first scan with min_points on
     CHECK(odo.lastMatched());
   }
   const long matched = odo.matched();
-  const CPose2D d = last - prev;
+  const CPose2D last = poses.back();
+  const CPose2D d3 = last - poses[poses.size() - 4];  // over 0.3 s
+  const CPose2D d(d3.x() / 3, d3.y() / 3, d3.phi() / 3);
   // One scan later, empty: last ⊕ d. Two scans later, too few points (a scanner blinded):
   // last ⊕ 2d, extrapolated from the last accepted pose, not from the first prediction.
   const CPose2D p1 = odo.update({}, 3.1);
@@ -334,12 +336,13 @@ TEST_CASE("a match turned more than max_turn_step from the prediction is rejecte
 TEST_CASE("a match faster than max_speed since the last accepted pose is rejected",
           "[scan_odometry]") {
   // Straight on at 1 m/s, then a scan from 0.55 m further on within 0.1 s (5.5 m/s; 0.45 m from
-  // the prediction, inside max_step): rejected at the default 5 m/s, matched with 6 m/s.
+  // the prediction, inside a max_step of 1 m): rejected at the default 5 m/s, matched with 6 m/s.
   const World w = room();
   long rejected = 0;
   auto leap = [&](double max_speed) {
     ScanOdometryOptions o;
     o.max_speed = max_speed;
+    o.max_step = 1.0;
     std::mt19937 rng(17);
     ScanOdometry odo = drivenStraight(w, o, 5, rng);
     const long before = odo.rejected();
@@ -353,6 +356,47 @@ TEST_CASE("a match faster than max_speed since the last accepted pose is rejecte
   const CPose2D free = leap(6);
   CHECK(rejected == 0);
   CHECK(free.x() == Approx(0.95).margin(0.03));
+}
+
+TEST_CASE("a match more than max_step from the constant-velocity prediction is rejected",
+          "[scan_odometry]") {
+  // Straight on at 1 m/s, then a scan from 0.35 m beyond where the robot should be 0.1 s later
+  // (a change of speed by 3.5 m/s within one scan, which no robot makes: a wrong alignment, as
+  // outdoors): rejected at the default 0.25 m, matched with max_step 0.5.
+  const World w = room();
+  auto leap = [&](double max_step, long& rejected) {
+    ScanOdometryOptions o;
+    o.max_step = max_step;
+    std::mt19937 rng(23);
+    ScanOdometry odo = drivenStraight(w, o, 5, rng);
+    const long before = odo.rejected();
+    const CPose2D p = odo.update(scan(w, kStart + CPose2D(0.85, 0, 0), rng), 0.5);
+    rejected = odo.rejected() - before;
+    return p;
+  };
+  long rejected = 0;
+  const CPose2D kept = leap(ScanOdometryOptions().max_step, rejected);
+  CHECK(rejected == 1);
+  CHECK(kept.x() == Approx(0.5).margin(0.02));  // the prediction
+  const CPose2D taken = leap(0.5, rejected);
+  CHECK(rejected == 0);
+  CHECK(taken.x() == Approx(0.85).margin(0.03));
+}
+
+TEST_CASE("the prediction's velocity is the mean of the last 0.3 s, not the last step's",
+          "[scan_odometry]") {
+  // 1 m/s straight on, one scan 0.1 m further than the pace (0.2 m in that step), then a scan
+  // with no points: the pose returned is the prediction. From the last step alone it would be
+  // 0.2 m ahead of the last pose; from the mean over 0.3 s (0.4 m in 0.3 s) 0.13 m.
+  const World w = room();
+  std::mt19937 rng(29);
+  ScanOdometry odo = drivenStraight(w, ScanOdometryOptions(), 5, rng);
+  const CPose2D bumped = odo.update(scan(w, kStart + CPose2D(0.6, 0, 0), rng), 0.5);
+  REQUIRE(odo.lastMatched());
+  REQUIRE(bumped.x() == Approx(0.6).margin(0.02));
+  const CPose2D predicted = odo.update({}, 0.6);
+  CHECK_FALSE(odo.lastMatched());
+  CHECK(predicted.x() - bumped.x() == Approx(0.4 / 0.3 * 0.1).margin(0.015));
 }
 
 namespace {

@@ -29,6 +29,7 @@ struct LegPeopleStageParams {
   std::vector<double> follow_zone{0.3, 3.0, 1.0};  // x_min x_max half_width, robot frame (m)
   double static_radius = 0.07;  // m: a leg's circle centre lies a leg radius behind its points
   double report_coast = 0.5;    // s unseen before a person is no longer written
+  double follow_coast = 2.0;    // s unseen before the followed person is no longer written
   bool static_scene = true;
   // Cells occupied for a second (not by a confirmed person) are static scene here, not the
   // grid's general 3 s: a new person must walk to be confirmed anyway, and a moving robot sees
@@ -178,6 +179,11 @@ const ParamTable<LegPeopleStageParams>& table() {
                 "a person unseen longer than this is no longer written (kept until "
                 "deleted, max_coast / max_coast_confirmed, so their legs can be "
                 "re-acquired behind an occlusion)")
+          .real(&P::follow_coast, "follow_coast", "s", 0, 3600,
+                "the followed person is written, and stays the one followed, while unseen up "
+                "to this long (at most max_coast): a person walking ahead of a following robot "
+                "is lost for a second when their legs merge or turn edge-on, and does not "
+                "stop existing then")
           .boolean(&P::report_tentative, "report_tentative", "also write tracks not yet confirmed")
           .boolean(&P::static_scene, "static_scene",
                    "no person starts in a cell the local occupancy grid (or the prior map) "
@@ -219,6 +225,7 @@ class LegPeople : public Tracker {
         follow_zone_(p.follow_zone),
         static_radius_(p.static_radius),
         report_coast_(p.report_coast),
+        follow_coast_(p.follow_coast),
         support_(p.tracker.support_gate > 0) {
     if (p.static_scene) scene_.emplace(p.scene);
     if (follow_ != "off" && follow_ != "nearest") {
@@ -269,7 +276,8 @@ class LegPeople : public Tracker {
     chooseFollowed(f, people);
     for (const PersonState& s : people) {
       if (!s.confirmed && !report_tentative_) continue;
-      if (s.unseen > report_coast_) continue;  // kept for re-acquisition, not reported
+      // Kept for re-acquisition, not reported.
+      if (s.unseen > (s.id == followed_ ? follow_coast_ : report_coast_)) continue;
       Track t;
       t.id = s.id;
       t.x = s.p.x(), t.y = s.p.y();
@@ -392,7 +400,8 @@ class LegPeople : public Tracker {
     auto followable = [&](const PersonState& s) {
       return s.confirmed && s.unseen <= report_coast_;
     };
-    for (const auto& s : people) alive |= s.id == followed_ && followable(s);
+    for (const auto& s : people)
+      alive |= s.id == followed_ && s.confirmed && !s.lost && s.unseen <= follow_coast_;
     if (alive) return;
     followed_ = 0;
     if (follow_id_ > 0) {
@@ -423,7 +432,7 @@ class LegPeople : public Tracker {
   long follow_id_ = 0, followed_ = 0;
   std::vector<double> follow_zone_;
   double static_radius_;
-  double report_coast_;
+  double report_coast_, follow_coast_;
   bool support_;  // support_gate > 0: the tracker is given the returns of no leg circle
   mutable bool classifier_seen_ = false;
 };
