@@ -308,6 +308,7 @@ class LegPeopleTracker {
                                         const std::vector<LegReturn>& returns,
                                         Eigen::Vector2d& sensor) const;
   double reidentifyRadius(const Person& q, double t) const;
+  int legsSeen(const Person& q) const;
   double lostDistance(const Person& q, double t, const Eigen::Vector2d& p) const;
   Person* lostPersonNear(double t, const Eigen::Vector2d& p);
   Object* reidentifyByOneLeg(Person& q, double t,
