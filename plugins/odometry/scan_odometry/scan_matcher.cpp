@@ -25,13 +25,6 @@ namespace {
 // match rests on too little to trust (or found a wrong alignment), the prediction is safer.
 constexpr double kMinGoodness = 0.5;
 
-// The prediction's velocity is the mean over this long (s) of accepted poses, not the last
-// step's: at 10 Hz a 2 cm matching error in each of two poses is 0.3 m/s in their velocity, which
-// the prediction then carries into the next scan's guess (and its max_step test). In the
-// simulated crowds a robot turning on the spot with 20-50 points a scan matched ±0.15 m around
-// such jittering predictions.
-constexpr double kVelocityWindow = 0.3;
-
 // Points queried per ICP iteration: one in this many (see Impl()); all of a sparse scan.
 constexpr unsigned kQueryDecimation = 3;
 
@@ -64,11 +57,8 @@ struct ScanOdometry::Impl {
   CPose2D kf_pose;  // keyframe's pose in the odometry frame
   CPose2D pose;     // last returned pose
   // The last two accepted poses (and their times) give the constant-velocity prediction.
-  CPose2D last_pose;
-  double last_t = 0;
-  // Accepted poses (t, pose), oldest first, over the last kVelocityWindow and one before it:
-  // the prediction's velocity.
-  std::deque<std::pair<double, CPose2D>> accepted;
+  CPose2D last_pose, prev_pose;
+  double last_t = 0, prev_t = 0;
   int n_accepted = 0;
   long matched = 0, rejected = 0, skipped = 0;
   std::deque<std::size_t> counts;           // thinned points of the last recent_scans scans
@@ -109,16 +99,14 @@ struct ScanOdometry::Impl {
     scan.reserve(4096);
   }
 
-  // Constant velocity: the motion from the accepted pose kVelocityWindow before the last one to
-  // the last, as a body-frame increment, scaled to the time since the last one (so a run of
-  // unmatched scans keeps going at the same speed instead of compounding its own
-  // extrapolations).
+  // Constant velocity: the motion between the last two accepted poses, as a body-frame
+  // increment, scaled to the time since the last one (so a run of unmatched scans keeps going
+  // at the same speed instead of compounding its own extrapolations).
   CPose2D predict(double t) const {
     if (n_accepted == 0) return pose;
-    const auto& [base_t, base] = accepted.front();
-    if (!(last_t > base_t)) return last_pose;
-    const CPose2D d = last_pose - base;  // base⁻¹ ⊕ last
-    const double s = std::min(t - last_t, opt.predict_for) / (last_t - base_t);
+    if (n_accepted < 2 || !(last_t > prev_t)) return last_pose;
+    const CPose2D d = last_pose - prev_pose;  // prev⁻¹ ⊕ last
+    const double s = std::min(t - last_t, opt.predict_for) / (last_t - prev_t);
     return last_pose + CPose2D(d.x() * s, d.y() * s, d.phi() * s);
   }
 
@@ -132,13 +120,8 @@ struct ScanOdometry::Impl {
   }
 
   void accept(const CPose2D& p, double t) {
-    // After a gap longer than the prediction is trusted, the old poses say nothing of the
-    // robot's velocity now.
-    if (n_accepted > 0 && !(t - last_t <= opt.predict_for)) accepted.clear();
-    accepted.emplace_back(t, p);
-    // (1 µs of slack: scans stamped 0.1 s apart sum to a hair under 0.3 s.)
-    while (accepted.size() > 2 && t - accepted[1].first >= kVelocityWindow - 1e-6)
-      accepted.pop_front();
+    prev_pose = last_pose;
+    prev_t = last_t;
     last_pose = p;
     last_t = t;
     ++n_accepted;

@@ -7,11 +7,10 @@
 // while the robot stays within keyframe_distance / keyframe_angle of the keyframe every match is
 // against the same reference, so errors do not add up (a standing robot does not drift); a new
 // keyframe is taken only once the robot has moved that far. The initial guess is a constant-
-// velocity prediction (the mean velocity of the last 0.3 s of accepted poses); a match that
-// disagrees with it by more than max_step or max_turn_step, or that few points support, is rejected
-// and the prediction is used instead (counted in rejected()); a rejected scan becomes a keyframe
-// only if the scan before it was rejected too. A scan with far fewer points than the recent ones
-// (min_points_share) is not matched at all.
+// velocity prediction; a match that disagrees with it by more than max_step or max_turn_step, or
+// that few points support, is rejected and the prediction is used instead (counted in rejected());
+// a rejected scan becomes a keyframe only if the scan before it was rejected too. A scan with far
+// fewer points than the recent ones (min_points_share) is not matched at all.
 //
 // Open spaces (a plaza or a crowd with a few poles and bins, no walls) give sparse scans: with
 // only the newest keyframe to match, a rotation error accepted once is carried into every later
@@ -40,11 +39,11 @@ struct ScanOdometryOptions {
   int max_iterations = 40;
   /// A match more than this (m) from the constant-velocity prediction is rejected: 0.25 m
   /// within a 10 Hz scan is 25 m/s² off constant velocity, which no wheelchair or service robot
-  /// makes; a disagreement that big is a wrong alignment. Correct matches stay far inside it
-  /// (largest seen: 4 cm driving the wheelchair of negative_2.bag, 0.24 m in the simulated
-  /// crowds turning on the spot with 20-50 points); on the outdoor following recording, where
-  /// 96 % of scans match nothing, the few matches accepted at 1 m were 0.25 m off at the median
-  /// and threw the tracking frame about at up to 4 m/s.
+  /// makes; a disagreement that big is a wrong alignment. Correct matches stay inside it (driving
+  /// the wheelchair of negative_2.bag at most 4 cm; in the simulated crowds 99.9 % within
+  /// 0.21 m, the rest turning on the spot with 20-50 points); on the outdoor following
+  /// recording, where 96 % of scans match nothing, the few matches accepted at 1 m were 0.25 m
+  /// off at the median and threw the tracking frame about at up to 4 m/s.
   double max_step = 0.25;
   /// ... or turned more than this (rad) from it: at 10 Hz a change of turn rate by 120°/s
   /// within a scan, which no wheelchair makes. In an open space a scan of ~25 poles and legs

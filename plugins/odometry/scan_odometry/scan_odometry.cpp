@@ -48,10 +48,9 @@ const ParamTable<ScanOdometryParams>& table() {
           .integer(path(&P::icp, &O::max_iterations), "max_iterations", "", 1, 10000,
                    "ICP iterations at most")
           .real(path(&P::icp, &O::max_step), "max_step", "m", 0.01, 100,
-                "a match farther than this from the constant-velocity prediction (the mean "
-                "velocity of the last 0.3 s of matches) is rejected: 0.25 m within a scan is "
-                "beyond any robot's acceleration, a wrong alignment (outdoors, where little "
-                "matches)")
+                "a match farther than this from the constant-velocity prediction is rejected: "
+                "0.25 m within a scan is beyond any robot's acceleration, a wrong alignment "
+                "(outdoors, where little matches)")
           .real(path(&P::icp, &O::max_turn_step), "max_turn_step", "deg", 0.1, 180,
                 "... or turned more than this from it", kDegree)
           .real(path(&P::icp, &O::max_speed), "max_speed", "m/s", 0, 100,
