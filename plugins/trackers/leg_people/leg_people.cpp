@@ -52,6 +52,10 @@ const ParamTable<LegPeopleParams>& trackerTable() {
           .real(&T::object_sigma, "object_sigma", "m", 1e-4, 10, "leg centre noise")
           .real(&T::gate, "gate", "m", 0.01, 10,
                 "largest distance from a predicted leg to the leg it is associated with")
+          .real(&T::standing_gate, "standing_gate", "m", 0, 10,
+                "the gate of a standing confirmed person's legs (centre moved < 0.2 m in the "
+                "last second): a leg at rest does not jump, its detection dropped while "
+                "clutter beside them was seen; 0: gate for everyone")
           .real(&T::object_max_coast, "object_max_coast", "s", 0, 3600,
                 "a leg or clutter track unseen this long is dropped")
           .real(&T::leg_score, "leg_score", "", 0, 1,

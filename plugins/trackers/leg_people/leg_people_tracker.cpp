@@ -17,6 +17,10 @@ constexpr double kStrideMinSpeed = 0.2;
 // s: the window over which the legs' separation must swing where the robot's motion is unknown
 // (confirm_stride): about half a gait cycle and more, too short for noise to add up.
 constexpr double kGaitWindow = 1.0;
+// A confirmed person is standing (standing_gate) when their centre moved less than
+// kStandingTravel over the last kStandingWindow (s; of which 80 % must be on record): a standing
+// person's estimate wanders a few cm, a slow walker's 0.5 m.
+constexpr double kStandingWindow = 1.0, kStandingTravel = 0.2;
 }  // namespace
 
 // Leg-like: the classifier says so on average, or the object walks (moves at init_speed or more)
@@ -59,12 +63,41 @@ void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
   formPeople(t, legs, is_static);
 }
 
+namespace {
+
+// Where a window of `window` s ending at t starts in `centres` (oldest first): the newest
+// position at least that old, the oldest one while the record is younger.
+const std::pair<double, Eigen::Vector2d>& windowStart(
+    const std::deque<std::pair<double, Eigen::Vector2d>>& centres, double t, double window) {
+  std::size_t k = 0;
+  while (k + 1 < centres.size() && t - centres[k + 1].first >= window) ++k;
+  return centres[k];
+}
+
+}  // namespace
+
 void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs) {
   const int rows = int(objects_.size()), cols = int(legs.size());
   std::vector<double> cost(std::size_t(rows) * std::size_t(cols));
-  for (int i = 0; i < rows; ++i)
-    for (int j = 0; j < cols; ++j)
-      cost[std::size_t(i) * cols + j] = (objects_[std::size_t(i)]->predicted - legs[j].p).norm();
+  // Confirmed people standing: their legs keep standing_gate (see there).
+  std::vector<long> standing;
+  if (p_.standing_gate > 0)
+    for (const auto& q : people_) {
+      if (!q->confirmed || q->centres.empty()) continue;
+      const auto& [t0, c0] = windowStart(q->centres, t, kStandingWindow);
+      if (t - t0 >= 0.8 * kStandingWindow &&
+          (q->centres.back().second - c0).norm() < kStandingTravel)
+        standing.push_back(q->id);
+    }
+  for (int i = 0; i < rows; ++i) {
+    const Object& o = *objects_[std::size_t(i)];
+    const bool still =
+        o.person >= 0 && std::find(standing.begin(), standing.end(), o.person) != standing.end();
+    for (int j = 0; j < cols; ++j) {
+      const double d = (o.predicted - legs[std::size_t(j)].p).norm();
+      cost[std::size_t(i) * cols + j] = still && d > p_.standing_gate ? INFINITY : d;  // forbidden
+    }
+  }
   const Assignment a = solveAssignment(cost, rows, cols, p_.gate);
   const LinearMeasurement m = positionMeasurement(4, p_.object_sigma);
   for (int i = 0; i < rows; ++i) {
@@ -120,19 +153,6 @@ bool LegPeopleTracker::expired(const Person& q, double t) const {
   if (p_.max_coast_occluded <= 0) return unseen > limit;
   return unseen - q.hidden > limit || unseen > std::max(limit, p_.max_coast_occluded);
 }
-
-namespace {
-
-// Where a window of `window` s ending at t starts in `centres` (oldest first): the newest
-// position at least that old, the oldest one while the record is younger.
-const std::pair<double, Eigen::Vector2d>& windowStart(
-    const std::deque<std::pair<double, Eigen::Vector2d>>& centres, double t, double window) {
-  std::size_t k = 0;
-  while (k + 1 < centres.size() && t - centres[k + 1].first >= window) ++k;
-  return centres[k];
-}
-
-}  // namespace
 
 // The way the centre moved over the last report_heading_window, when fast enough: the newest
 // position at least that old is the reference, the first one while the person is younger.
