@@ -1,7 +1,8 @@
 // leg_people's one_leg_stand: a confirmed person held up standing by one leg alone (one leg
 // object, or the scan returns of no circle) is a track left on a pole when the static scene is
 // there, or when the scanner moved round it far enough that a person would have shown their
-// second leg; a person standing with both legs seen is never let go.
+// second leg; a person standing with both legs seen is never let go. A person held up by single
+// sightings of one leg while the other leg's place lies in plain view is let go after max_one_leg.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
@@ -81,4 +82,37 @@ TEST_CASE("one leg standing while the scanner moves round it is a pole, static s
   CHECK(seenAtEnd(0, false, true, Pole::Circle));    // off
   // A person standing with both legs seen is kept, however far the scanner moves.
   CHECK(seenAtEnd(3, false, true, Pole::BothLegs));
+}
+
+namespace {
+
+// The walker of walkThenStand, then 15 s in which one leg is seen once a second and nothing
+// else: a track living on single sightings. `hide`: the occlusion test finds their other leg
+// (and their place, between sightings) behind something nearer. Returns whether the person is
+// still kept at the end.
+bool keptOnSingleSightings(double max_one_leg, bool hide) {
+  LegPeopleParams p;
+  p.max_one_leg = max_one_leg;
+  LegPeopleTracker tr(p);
+  double t = 0;
+  const long id = walkThenStand(tr, t, 40);
+  REQUIRE(id > 0);
+  const auto occluded = [&](double, double, double) { return hide; };
+  for (int k = 0; k < 150; ++k, t += 0.1) {
+    std::vector<LegDetection> legs;
+    if (k % 10 == 0) legs.push_back({kPole, 0.9, {0, -5}, -1});
+    tr.step(t, legs, {}, {}, true, {}, occluded);
+  }
+  for (const PersonState& s : tr.people())
+    if (s.id == id) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("a person held up by single sightings of one leg in plain view is let go (max_one_leg)",
+          "[legs]") {
+  CHECK_FALSE(keptOnSingleSightings(LegPeopleParams().max_one_leg, false));
+  CHECK(keptOnSingleSightings(LegPeopleParams().max_one_leg, true));  // the other leg hidden
+  CHECK(keptOnSingleSightings(0, false));                             // off
 }

@@ -166,6 +166,10 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "they are predicted (a pillar, a passer-by) is kept up to this long, however "
                 "briefly tracked (time unseen in plain view still counts towards max_coast "
                 "and max_coast_confirmed); 0: off")
+          .real(&T::max_one_leg, "max_one_leg", "s", 0, 3600,
+                "a confirmed person seen by one leg only this long, their other leg's place in "
+                "plain view, is deleted (a track that slid onto clutter lives on single "
+                "sightings); 0: off")
           .boolean(path(&T::pose, &LegPoseParams::zoning, &ZoningParams::resolve_swaps),
                    "resolve_swaps",
                    "a turn in place of over 90° between two scans is read as the person's "
@@ -264,9 +268,9 @@ class LegPeople : public Tracker {
     // Whether a place is hidden behind a nearer return (max_coast_occluded): every kept point,
     // in the fixed frame, built on first use.
     std::vector<Eigen::Vector2d> points;
-    auto occluded = [&](double x, double y) {
+    auto occluded = [&](double x, double y, double half_width) {
       if (points.empty()) points = keptPoints(f);
-      return hiddenBehind(f, {x, y}, points);
+      return hiddenBehind(f, {x, y}, half_width, points);
     };
     tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f), !f.motion_unknown, expected,
                   occluded);
@@ -365,9 +369,9 @@ class LegPeople : public Tracker {
 
   // Whether a return nearer the scanner than p by a body's depth lies within a body's half-width
   // of the ray to p: something hides a person standing there.
-  static bool hiddenBehind(const Frame& f, const Eigen::Vector2d& p,
+  static bool hiddenBehind(const Frame& f, const Eigen::Vector2d& p, double half_width,
                            const std::vector<Eigen::Vector2d>& points) {
-    constexpr double kHalfWidth = 0.25, kDepth = 0.3;  // m, a person's
+    constexpr double kDepth = 0.3;  // m, a person's
     const Eigen::Vector2d s = nearestSensor(f, p);
     const Eigen::Vector2d ray = p - s;
     const double range = ray.norm();
@@ -377,7 +381,7 @@ class LegPeople : public Tracker {
       const Eigen::Vector2d d = q - s;
       const double along = d.dot(u);
       if (along <= 0 || along >= range - kDepth) continue;
-      if (std::abs(u.x() * d.y() - u.y() * d.x()) * range / along <= kHalfWidth) return true;
+      if (std::abs(u.x() * d.y() - u.y() * d.x()) * range / along <= half_width) return true;
     }
     return false;
   }

@@ -79,6 +79,9 @@ struct LegPeopleTracker::Person {
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   double tracked = 0;  // s seen while confirmed (coastLimit)
   double hidden = 0;   // s unseen while something nearer the scanner hid their place
+  // s not seen by both legs, unexplained by anything nearer, since both were last seen
+  // (max_one_leg; see updatePeople), and the unexplained time of the current gap in sightings
+  double one_leg = 0, one_leg_gap = 0;
   // one_leg_stand: since when (NaN: not now) one leg object alone has held the person up
   // standing, and where, tested two ways (checkOneLegStand).
   OneLegStand on_static, in_view;

@@ -21,6 +21,9 @@ constexpr double kGaitWindow = 1.0;
 // kStandingTravel over the last kStandingWindow (s; of which 80 % must be on record): a standing
 // person's estimate wanders a few cm, a slow walker's 0.5 m.
 constexpr double kStandingWindow = 1.0, kStandingTravel = 0.2;
+// Half-widths (m) of what the occlusion test hides: a person's body (max_coast_occluded), a leg
+// with a few cm of prediction error (max_one_leg).
+constexpr double kBodyHalfWidth = 0.25, kLegHalfWidth = 0.1;
 }  // namespace
 
 // Leg-like: the classifier says so on average, or the object walks (moves at init_speed or more)
@@ -38,7 +41,7 @@ void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
                             const std::function<bool(double, double)>& is_static,
                             const std::vector<LegReturn>& returns, bool motion_known,
                             const std::function<bool(double, double)>& expected,
-                            const std::function<bool(double, double)>& occluded) {
+                            const std::function<bool(double, double, double)>& occluded) {
   for (const LegDetection& l : legs) classified_ = classified_ || l.scored;
   motion_known_ = motion_known;
   expected_ = expected;
@@ -150,6 +153,7 @@ double LegPeopleTracker::coastLimit(const Person& q) const {
 
 bool LegPeopleTracker::expired(const Person& q, double t) const {
   const double unseen = t - q.last_seen, limit = coastLimit(q);
+  if (q.confirmed && p_.max_one_leg > 0 && q.one_leg > p_.max_one_leg) return true;
   if (p_.max_coast_occluded <= 0) return unseen > limit;
   return unseen - q.hidden > limit || unseen > std::max(limit, p_.max_coast_occluded);
 }
@@ -264,6 +268,25 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       if (auto s = legFromReturns(P, t, want_r, want_l, is_static, returns, sensor)) r = *s;
     checkOneLegStand(P, t, legs, sensor, l, r, is_static);
     P.seen = l.seen || r.seen;
+    // Not seen by both legs where nothing nearer explains it (max_one_leg): scans with one leg
+    // seen and the other's place open to view, and the gaps between such sightings in which the
+    // person's place was open to view, each gap counted up to max_coast (a person lost long and
+    // found again by one leg is re-identification's case, not a track living on single
+    // sightings).
+    if (l.seen && r.seen) {
+      P.one_leg = P.one_leg_gap = 0;
+    } else if (P.confirmed) {
+      const auto hidden = [&](const Eigen::Vector2d& p, double half_width) {
+        return occluded_ && occluded_(p.x(), p.y(), half_width);
+      };
+      if (!P.seen) {
+        if (!hidden({P.est.x(), P.est.y()}, kBodyHalfWidth)) P.one_leg_gap += dt_person;
+      } else {
+        P.one_leg += std::min(P.one_leg_gap, p_.max_coast);
+        P.one_leg_gap = 0;
+        if (!hidden(l.seen ? want_r : want_l, kLegHalfWidth)) P.one_leg += dt_person;
+      }
+    }
     if (P.seen) {
       P.last_seen = t;
       for (Object* o : {findObject(objects_, P.left), findObject(objects_, P.right)})
@@ -291,7 +314,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // Unseen where something nearer hides them: their absence is explained (max_coast_occluded).
     if (P.seen)
       P.hidden = 0;
-    else if (P.confirmed && occluded_ && occluded_(P.est.x(), P.est.y()))
+    else if (P.confirmed && occluded_ && occluded_(P.est.x(), P.est.y(), kBodyHalfWidth))
       P.hidden += dt_person;
     if (P.seen) recordCentre(P, t, c);
     updateLostVelocity(P);
