@@ -2,7 +2,9 @@
 // a run drives it, on hand-made frames of leg circles: the person standing in front is confirmed
 // and marked `following`; lost from sight for 1.5 s (legs merged, turned edge-on), they are still
 // written and still followed (follow_coast 2 s), where anyone else is written only report_coast
-// (0.5 s) past their last sighting; back in view, they are the same track.
+// (0.5 s) past their last sighting; back in view, they are the same track. Out of follow_zone for
+// longer than follow_coast, the person followed is let go.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
@@ -98,4 +100,25 @@ TEST_CASE("with follow_coast at report_coast the followed person goes unwritten 
   CHECK(w.status.count(34) == 1);
   for (std::size_t k = 36; k < 45; ++k) CHECK(w.status.count(k) == 0);
   CHECK(w.status.count(46) == 1);
+}
+
+TEST_CASE("the person followed is let go once out of follow_zone for longer than follow_coast",
+          "[legs][follow]") {
+  // Standing 1.5 m ahead for 3 s (followed), then walking off straight ahead at 1 m/s to 4.5 m
+  // (follow_zone ends at 3 m, which they pass at 4.5 s) and standing there, seen throughout: still
+  // the person followed up to 2 s after leaving the zone, then only confirmed (no one else to
+  // follow).
+  FollowStage stage("");
+  std::map<int, std::string> status;
+  for (int k = 0; k < 100; ++k) {
+    const double t = 0.1 * k, x = std::clamp(1.5 + (t - 3.0), 1.5, 4.5);
+    Frame f = legsAt(std::size_t(k), 1000 + t, x, true);
+    stage.run(f);
+    for (const Track& tr : f.tracks) status[k] = tr.status;
+  }
+  REQUIRE(status.count(30) == 1);
+  CHECK(status.at(30) == "following");
+  CHECK(status.at(60) == "following");  // out of the zone 1.5 s
+  CHECK(status.at(70) == "confirmed");  // 2.5 s
+  CHECK(status.at(99) == "confirmed");
 }

@@ -210,7 +210,8 @@ const ParamTable<LegPeopleStageParams>& table() {
                 "occupied cells are static scene")
           .text(&P::follow, "follow",
                 "person following: off, nearest (the nearest confirmed person in "
-                "follow_zone, re-chosen when lost) or a track id; marked `following`")
+                "follow_zone, re-chosen when lost or out of the zone for longer than "
+                "follow_coast) or a track id; marked `following`")
           .vector(&P::follow_zone, "follow_zone", "m", 3, -100, 100,
                   "x_min x_max half_width of the zone in front of the robot (robot frame)");
   return t;
@@ -408,22 +409,38 @@ class LegPeople : public Tracker {
     auto followable = [&](const PersonState& s) {
       return s.confirmed && s.unseen <= report_coast_;
     };
-    for (const auto& s : people)
-      alive |= s.id == followed_ && s.confirmed && !s.lost && s.unseen <= follow_coast_;
+    const mrpt::poses::CPose3D inv = -f.robot_pose;
+    auto inZone = [&](const PersonState& s) {
+      double x, y, z;
+      inv.composePoint(s.p.x(), s.p.y(), 0, x, y, z);
+      return inFollowZone(x, y);
+    };
+    for (const auto& s : people) {
+      if (s.id != followed_ || !s.confirmed || s.lost || s.unseen > follow_coast_) continue;
+      alive = true;
+      // Following the nearest: one out of follow_zone for longer than follow_coast is let go
+      // (most often a track that slid off its person onto something beyond), and whoever is
+      // in the zone is chosen (or confirmed there, follow_confirm_time).
+      if (follow_id_ > 0 || inZone(s))
+        out_of_zone_since_ = NAN;
+      else if (std::isnan(out_of_zone_since_))
+        out_of_zone_since_ = f.t;
+      else if (f.t - out_of_zone_since_ > follow_coast_)
+        alive = false;
+    }
     if (alive) return;
     followed_ = 0;
+    out_of_zone_since_ = NAN;
     if (follow_id_ > 0) {
       for (const auto& s : people)
         if (s.id == follow_id_ && followable(s)) followed_ = s.id;
       return;
     }
     double best = INFINITY;
-    const mrpt::poses::CPose3D inv = -f.robot_pose;
     for (const auto& s : people) {
-      if (!followable(s)) continue;
+      if (!followable(s) || !inZone(s)) continue;
       double x, y, z;
       inv.composePoint(s.p.x(), s.p.y(), 0, x, y, z);
-      if (!inFollowZone(x, y)) continue;
       const double d = std::hypot(x, y);
       if (d < best) best = d, followed_ = s.id;
     }
@@ -438,6 +455,7 @@ class LegPeople : public Tracker {
   bool report_tentative_;
   std::string follow_;
   long follow_id_ = 0, followed_ = 0;
+  double out_of_zone_since_ = NAN;  // since when the person followed is out of follow_zone
   std::vector<double> follow_zone_;
   double static_radius_;
   double report_coast_, follow_coast_;
