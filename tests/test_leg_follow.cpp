@@ -11,7 +11,6 @@
 #include <set>
 #include <string>
 
-#include "pedtrack/pipeline.h"
 #include "test_support.h"
 
 using namespace pedtrack;
@@ -20,22 +19,13 @@ using namespace pedtrack::test;
 namespace {
 
 // A pipeline of one leg_people stage (the source is never read) with the given extra keys.
-struct FollowStage {
-  PipelineConfig config;
-  std::unique_ptr<Pipeline> pipeline;
-  explicit FollowStage(const std::string& keys) {
-    config = PipelineConfig::fromText(
-        "[pipeline]\nstages = source track\n[source]\nplugin = sim\nscenario = " +
-            std::string(PEDTRACK_SOURCE_DIR) +
-            "/configs/scenarios/legs_standing_60s.ini\n"
-            "[track]\nplugin = leg_people\nfollow = nearest\n" +
-            keys,
-        "t.ini", {}, testRegistry());
-    pipeline = std::make_unique<Pipeline>(config);
-  }
-  void run(Frame& f) {
-    for (Stage* s : pipeline->stages()) s->process(f);
-  }
+struct FollowStage : DrivenStages {
+  explicit FollowStage(const std::string& keys)
+      : DrivenStages("[pipeline]\nstages = source track\n[source]\nplugin = sim\nscenario = " +
+                     std::string(PEDTRACK_SOURCE_DIR) +
+                     "/configs/scenarios/legs_standing_60s.ini\n"
+                     "[track]\nplugin = leg_people\nfollow = nearest\n" +
+                     keys) {}
 };
 
 // A frame at t with two leg circles 0.2 m apart across the line of sight at (x, 0), or none.

@@ -332,28 +332,33 @@ TEST_CASE("a match turned more than max_turn_step from the prediction is rejecte
   CHECK(loose.phi() == Approx(6 * kDeg).margin(0.5 * kDeg));
 }
 
+namespace {
+
+// The pose a scan from x ahead of the start gets at t = 0.5 s after 5 scans driven straight on at
+// 1 m/s (drivenStraight) with options o, and whether it was rejected.
+std::pair<CPose2D, bool> leap(const ScanOdometryOptions& o, double x, unsigned seed) {
+  const World w = room();
+  std::mt19937 rng(seed);
+  ScanOdometry odo = drivenStraight(w, o, 5, rng);
+  const long before = odo.rejected();
+  const CPose2D p = odo.update(scan(w, kStart + CPose2D(x, 0, 0), rng), 0.5);
+  return {p, odo.rejected() > before};
+}
+
+}  // namespace
+
 TEST_CASE("a match faster than max_speed since the last accepted pose is rejected",
           "[scan_odometry]") {
   // Straight on at 1 m/s, then a scan from 0.55 m further on within 0.1 s (5.5 m/s; 0.45 m from
   // the prediction, inside a max_step of 1 m): rejected at the default 5 m/s, matched with 6 m/s.
-  const World w = room();
-  long rejected = 0;
-  auto leap = [&](double max_speed) {
-    ScanOdometryOptions o;
-    o.max_speed = max_speed;
-    o.max_step = 1.0;
-    std::mt19937 rng(17);
-    ScanOdometry odo = drivenStraight(w, o, 5, rng);
-    const long before = odo.rejected();
-    const CPose2D p = odo.update(scan(w, kStart + CPose2D(0.95, 0, 0), rng), 0.5);
-    rejected = odo.rejected() - before;
-    return p;
-  };
-  const CPose2D capped = leap(ScanOdometryOptions().max_speed);
-  CHECK(rejected == 1);
+  ScanOdometryOptions o;
+  o.max_step = 1.0;
+  const auto [capped, capped_rejected] = leap(o, 0.95, 17);
+  CHECK(capped_rejected);
   CHECK(capped.x() == Approx(0.5).margin(0.02));  // the prediction
-  const CPose2D free = leap(6);
-  CHECK(rejected == 0);
+  o.max_speed = 6;
+  const auto [free, free_rejected] = leap(o, 0.95, 17);
+  CHECK_FALSE(free_rejected);
   CHECK(free.x() == Approx(0.95).margin(0.03));
 }
 
@@ -362,23 +367,13 @@ TEST_CASE("a match more than max_step from the constant-velocity prediction is r
   // Straight on at 1 m/s, then a scan from 0.35 m beyond where the robot should be 0.1 s later
   // (a change of speed by 3.5 m/s within one scan, which no robot makes: a wrong alignment, as
   // outdoors): rejected at the default 0.25 m, matched with max_step 0.5.
-  const World w = room();
-  auto leap = [&](double max_step, long& rejected) {
-    ScanOdometryOptions o;
-    o.max_step = max_step;
-    std::mt19937 rng(23);
-    ScanOdometry odo = drivenStraight(w, o, 5, rng);
-    const long before = odo.rejected();
-    const CPose2D p = odo.update(scan(w, kStart + CPose2D(0.85, 0, 0), rng), 0.5);
-    rejected = odo.rejected() - before;
-    return p;
-  };
-  long rejected = 0;
-  const CPose2D kept = leap(ScanOdometryOptions().max_step, rejected);
-  CHECK(rejected == 1);
+  ScanOdometryOptions o;
+  const auto [kept, kept_rejected] = leap(o, 0.85, 23);
+  CHECK(kept_rejected);
   CHECK(kept.x() == Approx(0.5).margin(0.02));  // the prediction
-  const CPose2D taken = leap(0.5, rejected);
-  CHECK(rejected == 0);
+  o.max_step = 0.5;
+  const auto [taken, taken_rejected] = leap(o, 0.85, 23);
+  CHECK_FALSE(taken_rejected);
   CHECK(taken.x() == Approx(0.85).margin(0.03));
 }
 

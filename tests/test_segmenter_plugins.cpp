@@ -21,20 +21,11 @@ namespace {
 
 const std::string kSena = mrptDataset("2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
 
-// A pipeline whose stages the test drives itself (the source is never read).
-struct Stages {
-  PipelineConfig config;
-  std::unique_ptr<Pipeline> pipeline;
-  Stages(const std::string& stages, const std::string& sections) {
-    config = PipelineConfig::fromText("[pipeline]\nstages = source " + stages +
-                                          "\n[source]\nplugin = rawlog\nfile = " + kSena + "\n" +
-                                          sections,
-                                      "t.ini", {}, testRegistry());
-    pipeline = std::make_unique<Pipeline>(config);
-  }
-  void run(Frame& f) {
-    for (Stage* s : pipeline->stages()) s->process(f);
-  }
+// A pipeline of `stages` after a rawlog source the test never reads.
+struct Stages : DrivenStages {
+  Stages(const std::string& stages, const std::string& sections)
+      : DrivenStages("[pipeline]\nstages = source " + stages +
+                     "\n[source]\nplugin = rawlog\nfile = " + kSena + "\n" + sections) {}
 };
 
 Frame cloudFrame(const std::vector<std::array<float, 3>>& pts) {

@@ -121,6 +121,14 @@ const PluginRegistry& testRegistry() {
   return r;
 }
 
+DrivenStages::DrivenStages(const std::string& pipeline_text, const std::string& file)
+    : config(PipelineConfig::fromText(pipeline_text, file, {}, testRegistry())),
+      pipeline(std::make_unique<Pipeline>(config)) {}
+
+void DrivenStages::run(Frame& f) {
+  for (Stage* s : pipeline->stages()) s->process(f);
+}
+
 std::vector<Frame> readAllFrames(const std::string& pipeline_text, const std::string& file) {
   const auto cfg = PipelineConfig::fromText(pipeline_text, file, {}, testRegistry());
   Pipeline p(cfg);

@@ -1,7 +1,9 @@
 #pragma once
 #include "pedtrack/frame.h"
+#include "pedtrack/pipeline.h"
 #include "pedtrack/plugin_registry.h"
 // Helpers shared by the test files: paths, running the host binary, temporary directories.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -55,4 +57,15 @@ const PluginRegistry& testRegistry();
 /// Every frame the source of `pipeline_text` yields (`file` names it in messages).
 std::vector<Frame> readAllFrames(const std::string& pipeline_text,
                                  const std::string& file = "t.ini");
+/// The pipeline of `pipeline_text` with its stages driven by the test on frames of its own, as a
+/// run drives them (the source is built but never read).
+struct DrivenStages {
+  PipelineConfig config;
+  std::unique_ptr<Pipeline> pipeline;
+  explicit DrivenStages(const std::string& pipeline_text, const std::string& file = "t.ini");
+  DrivenStages(const DrivenStages&) = delete;  // the pipeline holds on to `config`
+  DrivenStages& operator=(const DrivenStages&) = delete;
+  /// Every stage, in order, on f.
+  void run(Frame& f);
+};
 }  // namespace pedtrack::test

@@ -167,9 +167,10 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "briefly tracked (time unseen in plain view still counts towards max_coast "
                 "and max_coast_confirmed); 0: off")
           .real(&T::max_one_leg, "max_one_leg", "s", 0, 3600,
-                "a confirmed person seen by one leg only this long, their other leg's place in "
-                "plain view, is deleted (a track that slid onto clutter lives on single "
-                "sightings); 0: off")
+                "a confirmed person not seen by both legs this long is deleted, counting only "
+                "time nothing nearer explains (one leg seen, the other's place in view; gaps "
+                "between sightings in view, each up to max_coast): a track that slid onto "
+                "clutter lives on single sightings; 0: off")
           .boolean(path(&T::pose, &LegPoseParams::zoning, &ZoningParams::resolve_swaps),
                    "resolve_swaps",
                    "a turn in place of over 90° between two scans is read as the person's "
@@ -261,9 +262,7 @@ class LegPeople : public Tracker {
     if (follow_ == "nearest" && followed_ == 0) {
       const mrpt::poses::CPose3D inv = -f.robot_pose;
       expected = [this, inv](double x, double y) {
-        double rx, ry, rz;
-        inv.composePoint(x, y, 0, rx, ry, rz);
-        return inFollowZone(rx, ry);
+        return inFollowZone(inRobotFrame(inv, {x, y}));
       };
     }
     // Whether a place is hidden behind a nearer return (max_coast_occluded): every kept point,
@@ -410,11 +409,7 @@ class LegPeople : public Tracker {
       return s.confirmed && s.unseen <= report_coast_;
     };
     const mrpt::poses::CPose3D inv = -f.robot_pose;
-    auto inZone = [&](const PersonState& s) {
-      double x, y, z;
-      inv.composePoint(s.p.x(), s.p.y(), 0, x, y, z);
-      return inFollowZone(x, y);
-    };
+    auto inZone = [&](const PersonState& s) { return inFollowZone(inRobotFrame(inv, s.p)); };
     for (const auto& s : people) {
       if (s.id != followed_ || !s.confirmed || s.lost || s.unseen > follow_coast_) continue;
       alive = true;
@@ -438,16 +433,22 @@ class LegPeople : public Tracker {
     }
     double best = INFINITY;
     for (const auto& s : people) {
-      if (!followable(s) || !inZone(s)) continue;
-      double x, y, z;
-      inv.composePoint(s.p.x(), s.p.y(), 0, x, y, z);
-      const double d = std::hypot(x, y);
-      if (d < best) best = d, followed_ = s.id;
+      if (!followable(s)) continue;
+      const Eigen::Vector2d r = inRobotFrame(inv, s.p);
+      if (inFollowZone(r) && r.norm() < best) best = r.norm(), followed_ = s.id;
     }
   }
 
-  bool inFollowZone(double x, double y) const {  // robot frame
-    return x >= follow_zone_[0] && x <= follow_zone_[1] && std::abs(y) <= follow_zone_[2];
+  // A fixed-frame point in the robot frame, given the inverse of the robot's pose.
+  static Eigen::Vector2d inRobotFrame(const mrpt::poses::CPose3D& inv, const Eigen::Vector2d& p) {
+    double x, y, z;
+    inv.composePoint(p.x(), p.y(), 0, x, y, z);
+    return {x, y};
+  }
+
+  bool inFollowZone(const Eigen::Vector2d& r) const {  // robot frame
+    return r.x() >= follow_zone_[0] && r.x() <= follow_zone_[1] &&
+           std::abs(r.y()) <= follow_zone_[2];
   }
 
   LegPeopleTracker tracker_;

@@ -225,8 +225,11 @@ struct LegPeopleParams {
   /// Their absence is explained, and a person who waits behind a pillar comes back on their
   /// track (re-identification). 0: off.
   double max_coast_occluded = 30;
-  /// s: a confirmed person seen by one leg only for this long while their other leg's predicted
-  /// place lay in plain view (no nearer return hiding it) is deleted. A person's legs are seen
+  /// s: a confirmed person not seen by both legs for this long is deleted, counting only time
+  /// nothing nearer explains: scans with one leg seen and the other's predicted place in plain
+  /// view (no nearer return hiding it), and the gaps between sightings with the person's place
+  /// in plain view, each up to max_coast (a person lost long and found again by one leg is
+  /// re-identification's case). A person's legs are seen
   /// together again within seconds unless one hides the other; a track that lives on single
   /// sightings is most often one that slid off its person onto clutter. On the outdoor following
   /// recording one such track hopped from clutter to clutter for 180 s (seen by one "leg" in 10 %
