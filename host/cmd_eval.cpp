@@ -374,6 +374,7 @@ int evalCommand(const std::vector<std::string>& args) {
   for (const auto& s : args) {
     if (s == "--model" || s.rfind("--model=", 0) == 0) return evalClassifierCommand(args);
     if (s == "--decisions" || s.rfind("--decisions=", 0) == 0) return evalDecisionsCommand(args);
+    if (s == "--kitti" || s.rfind("--kitti=", 0) == 0) return evalKittiCommand(args);
   }
   EvalArgs a;
   po::options_description opts("options");
@@ -435,7 +436,8 @@ int evalCommand(const std::vector<std::string>& args) {
           "--detections detections.csv|clusters.csv [options] | --truth-points "
           "truth_points.bin --labels point_labels.bin [options] | --model MODEL.yml --dataset "
           "D.ini [options] (classifiers: `pedtrack eval --model M --help`) | --decisions "
-          "RUN_DIR [options] (`pedtrack eval --decisions D --help`)",
+          "RUN_DIR [options] (`pedtrack eval --decisions D --help`) | --kitti DIR --detections "
+          "detections.csv (`pedtrack eval --kitti D --help`)",
           opts, pos, args, vm))
     return exit_code::kOk;
   a.has_following = vm.count("following") > 0;

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 
 #include "commands.h"
 #include "options.h"
 #include "pedtrack/errors.h"
+#include "pedtrack/eval/kitti_labels.h"
 #include "pedtrack/pipeline.h"
 #include "pedtrack/progress.h"
 #include "render/frame_source.h"
@@ -27,12 +29,12 @@ using render::ObjectIndex;
 using render::StreamSummary;
 
 struct RenderArgs {
-  std::string rawlog, tracks, truth, detections, out, center, labels, run;
+  std::string rawlog, tracks, truth, detections, out, center, labels, run, kitti;
   std::vector<std::string> plugin_path;
   long frame = -1, max_frames = -1;
-  double trail = 2, range = 0, fps = 0, ground_z = 0.15;
+  double trail = 2, range = 0, fps = 0, ground_z = 0.15, person_score = 0.5;
   int size = 900;
-  bool quiet = false, video = false;
+  bool quiet = false, video = false, scores = false;
 };
 
 [[noreturn]] void bad(const std::string& what) {
@@ -86,11 +88,15 @@ void validate(RenderArgs& a) {
     take(a.labels, "point_labels.bin");
     take(a.truth, "truth.csv");
   }
-  requireFile("rawlog", a.rawlog);
+  // A folder is a sequence of KITTI scans (the kitti source).
+  if (!fs::is_directory(a.rawlog)) requireFile("rawlog", a.rawlog);
   requireFile("labels", a.labels);
   requireFile("tracks", a.tracks);
   requireFile("truth", a.truth);
   requireFile("detections", a.detections);
+  if (!a.kitti.empty() && !fs::is_directory(fs::path(a.kitti) / "label_2"))
+    bad("--kitti '" + a.kitti + "': no label_2/ folder (a KITTI object benchmark folder)");
+  if (!std::isfinite(a.person_score)) bad("--person-score: must be a number");
 }
 
 /// Positions the default view must hold: every track and true position, and the sensor's path
@@ -136,6 +142,13 @@ int renderCommand(const std::vector<std::string>& args) {
       "points lower than this (m, robot frame) are drawn as ground")(
       "max-frames", po::value(&a.max_frames)->default_value(-1),
       "use only the first N frames (-1: all)")(
+      "scores", po::bool_switch(&a.scores),
+      "write each detection's score beside it (bright from --person-score on)")(
+      "person-score", po::value(&a.person_score)->default_value(0.5),
+      "a detection scoring at least this is called a person")(
+      "kitti", po::value(&a.kitti),
+      "a KITTI object benchmark folder (label_2/, calib/): its labelled boxes over the scan "
+      "of the same number (the kitti source's times: scan t x 10)")(
       "plugin-path", po::value(&a.plugin_path)->composing(), "extra plugin directory (repeatable)")(
       "quiet,q", "no progress output");
   po::positional_options_description pos;
@@ -196,6 +209,25 @@ int renderCommand(const std::vector<std::string>& args) {
   scene.trail_s = a.trail;
   scene.video = a.video;
   scene.labels = labels.get();
+  scene.scores = a.scores;
+  scene.person_score = a.person_score;
+  std::map<long, eval::KittiScanLabels> kitti;
+  if (!a.kitti.empty()) {
+    kitti = eval::readKittiObjectDir(a.kitti);
+    scene.boxes = [&kitti](const Frame& f) {
+      std::vector<render::LabelBox> out;
+      const auto it = kitti.find(std::lround(f.t * 10));
+      if (it == kitti.end()) return out;
+      // Velodyne frame to fixed frame through the scanner's pose.
+      const double c = std::cos(f.sensor_pose.yaw()), s = std::sin(f.sensor_pose.yaw());
+      for (const auto& o : it->second.objects) {
+        if (o.dontCare()) continue;
+        out.push_back({f.sensor_pose.x() + c * o.x - s * o.y, f.sensor_pose.y() + s * o.x + c * o.y,
+                       o.yaw + f.sensor_pose.yaw(), o.l, o.w, o.type, o.person()});
+      }
+      return out;
+    };
+  }
   scene.view = render::fitView(center.value_or(summary.sensor_path.front()), a.range, a.size,
                                mustSee(scene));
 

@@ -94,6 +94,14 @@ const char* commandAbout(const std::string& key) {
        "false-positive rates, precision, accuracy), per cluster and frame and per object.\n"
        "Run the classifier with q_person = 0 so every cluster gets a detection. A missing\n"
        "file, or a CSV without the cluster column, exits 2.\n"},
+      {"eval --kitti",
+       "A run of the kitti source over KITTI object benchmark scans (DIR/velodyne) against\n"
+       "their labels (DIR/label_2, camera frame, turned into the Velodyne's by DIR/calib):\n"
+       "each labelled Pedestrian or Person_sitting found (a cluster called a person inside its\n"
+       "box grown by --margin) or missed, and every cluster called a person inside the\n"
+       "camera's field of view (the only part KITTI labels) named by the labelled object it\n"
+       "lies on, or none. A row of time t belongs to scan t x --scan-rate (the source's\n"
+       "default times). A missing label, calibration or detections file exits 2.\n"},
       {"montecarlo",
        "Runs PIPELINE on --runs simulations of SCENARIO, seed --seed-base + i for run i\n"
        "(DIR/run_NNN: `pedtrack run PIPELINE --input SCENARIO --set SRC.seed=...`), --jobs at\n"

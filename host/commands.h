@@ -24,6 +24,8 @@ int monteCarloCommand(const std::vector<std::string>& args);
 int evalClassifierCommand(const std::vector<std::string>& args);
 /// `pedtrack eval --decisions`: a run's person / non-person decisions against simulated truth.
 int evalDecisionsCommand(const std::vector<std::string>& args);
+/// `pedtrack eval --kitti`: a run on KITTI object benchmark scans against their labels.
+int evalKittiCommand(const std::vector<std::string>& args);
 
 struct StageBenchOptions {
   std::string pipeline, input, topic;

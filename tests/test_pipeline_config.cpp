@@ -154,6 +154,14 @@ TEST_CASE("environment variables expand; unknown ones are named", "[config]") {
       errorOf("[pipeline]\nstages = source\n\n[source]\nfile = ${PEDTRACK_NOT_SET_ANYWHERE}/x\n") ==
       "p.ini:5: ${PEDTRACK_NOT_SET_ANYWHERE} is neither @define'd in the file nor set in the "
       "environment");
+  // --input replaces the source's keys: an unset variable there is not needed (a shipped
+  // config whose default input is under $PEDTRACK_DATA, run on the user's own file).
+  PipelineOverrides ov;
+  ov.input = mrptDataset("rot_scan_2d.rawlog");
+  const auto replaced = parse(
+      "[pipeline]\nstages = source\n[source]\nplugin = rawlog\nfile = ${PEDTRACK_NOT_SET_X}/x\n",
+      ov);
+  CHECK(replaced.stages[0].params.getString("file") == mrptDataset("rot_scan_2d.rawlog"));
 }
 
 TEST_CASE("every shipped pipeline in configs/ validates", "[config]") {

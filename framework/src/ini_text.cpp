@@ -12,7 +12,8 @@ namespace pedtrack {
 
 namespace fs = std::filesystem;
 
-std::string preprocessIniText(const std::string& text, const std::string& file) {
+std::string preprocessIniText(const std::string& text, const std::string& file,
+                              const std::string& replaced) {
   // Names @define'd in the file are MRPT's to expand; any other ${NAME} comes from the environment.
   std::set<std::string> defined;
   {
@@ -28,6 +29,7 @@ std::string preprocessIniText(const std::string& text, const std::string& file) 
   std::istringstream is(text);
   std::string line;
   int lineno = 0;
+  std::string section;
   while (std::getline(is, line)) {
     ++lineno;
     const std::string t = trim(line);
@@ -35,6 +37,8 @@ std::string preprocessIniText(const std::string& text, const std::string& file) 
       out << "\n";  // keep line numbers of MRPT's own messages right
       continue;
     }
+    if (!t.empty() && t[0] == '[' && t.find(']') != std::string::npos)
+      section = trim(t.substr(1, t.find(']') - 1));
     // Inline comments: ';' or '#' after white space.
     for (std::size_t i = 1; i < line.size(); ++i) {
       if ((line[i] == ';' || line[i] == '#') && (line[i - 1] == ' ' || line[i - 1] == '\t')) {
@@ -43,6 +47,7 @@ std::string preprocessIniText(const std::string& text, const std::string& file) 
       }
     }
     std::string expanded;
+    bool unset_in_replaced = false;
     for (std::size_t i = 0; i < line.size(); ++i) {
       if (line[i] == '$' && i + 1 < line.size() && line[i + 1] == '{') {
         const auto close = line.find('}', i);
@@ -57,6 +62,8 @@ std::string preprocessIniText(const std::string& text, const std::string& file) 
           std::error_code ec;
           const bool relative_dir = v[0] != '\0' && v[0] != '/' && fs::exists(v, ec);
           expanded += relative_dir ? fs::absolute(v).lexically_normal().string() : std::string(v);
+        } else if (!replaced.empty() && section == replaced) {
+          unset_in_replaced = true;  // the command line's input replaces this section's keys
         } else {
           throw ConfigError(file + ":" + std::to_string(lineno) + ": ${" + name +
                             "} is neither @define'd in the file nor set in the environment");
@@ -66,9 +73,29 @@ std::string preprocessIniText(const std::string& text, const std::string& file) 
         expanded += line[i];
       }
     }
-    out << expanded << "\n";
+    out << (unset_in_replaced ? std::string() : expanded) << "\n";
   }
   return out.str();
+}
+
+std::string firstStageName(const std::string& text) {
+  std::istringstream is(text);
+  std::string line, section;
+  while (std::getline(is, line)) {
+    const std::string t = trim(line);
+    if (!t.empty() && t[0] == '[' && t.find(']') != std::string::npos) {
+      section = trim(t.substr(1, t.find(']') - 1));
+      continue;
+    }
+    const auto eq = t.find('=');
+    if (section != "pipeline" || eq == std::string::npos || trim(t.substr(0, eq)) != "stages")
+      continue;
+    std::istringstream names(t.substr(eq + 1));
+    std::string first;
+    names >> first;
+    return first;
+  }
+  return "";
 }
 
 }  // namespace pedtrack

@@ -144,11 +144,12 @@ ParamSpec ParamSpec::vector(std::string name, std::optional<std::vector<double>>
   return s;
 }
 
-ParamSpec ParamSpec::inputFile(std::string name, std::string doc) {
+ParamSpec ParamSpec::inputFile(std::string name, std::string doc, bool folder_ok) {
   ParamSpec s;
   s.name = std::move(name);
   s.type = ParamType::InputFile;
   s.doc = std::move(doc);
+  s.folder_ok = folder_ok;
   return s;
 }
 
@@ -216,7 +217,8 @@ std::string validateValue(const ParamSpec& spec, const std::string& value,
     case ParamType::InputFile:
       if (value.empty()) fail("no file given");
       if (!std::filesystem::exists(value)) fail("file '" + value + "' does not exist");
-      if (std::filesystem::is_directory(value)) fail("'" + value + "' is a directory, not a file");
+      if (!spec.folder_ok && std::filesystem::is_directory(value))
+        fail("'" + value + "' is a directory, not a file");
       return value;
     case ParamType::String:
       return value;

@@ -134,7 +134,9 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
   cfg.file = file;
   IniModel model;
   try {
-    mrpt::config::CConfigFileMemory raw(preprocessIniText(text, file));
+    // --input replaces the source's keys: a variable they use need not be set.
+    mrpt::config::CConfigFileMemory raw(preprocessIniText(
+        text, file, overrides.input.empty() ? std::string() : firstStageName(text)));
     model = readModel(raw);
   } catch (const ConfigError&) {
     throw;
@@ -181,9 +183,15 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
     const std::string ext = fs::path(overrides.input).extension().string();
     model.keys[source].clear();
     if (!model.hasSection(source)) model.sections.push_back(source);
-    // A scenario (.ini) is simulated; anything else is a log replayed.
+    // A scenario (.ini) is simulated; KITTI Velodyne scans (a .bin, or a folder of them) and
+    // anything else (a log) are replayed.
     const std::string key = ext == ".ini" ? "scenario" : "file";
-    model.set(source, "plugin", ext == ".bag" ? "rosbag" : ext == ".ini" ? "sim" : "rawlog");
+    const bool kitti = ext == ".bin" || fs::is_directory(overrides.input);
+    model.set(source, "plugin",
+              ext == ".bag"   ? "rosbag"
+              : ext == ".ini" ? "sim"
+              : kitti         ? "kitti"
+                              : "rawlog");
     model.set(source, key, absoluteFromCwd(overrides.input));
     from_cli.insert({source, key});
     if (!overrides.topic.empty()) {

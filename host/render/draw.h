@@ -45,6 +45,18 @@ void drawTrackMarker(cv::Mat& img, const View& view, const ObjectRow& track);
 void drawTruth(cv::Mat& img, const View& view, const ObjectRow& truth);
 /// A detection: a tilted cross.
 void drawDetection(cv::Mat& img, const View& view, const ObjectRow& detection, int size_px = 0);
+/// A detection's score beside its cross: bright from `person_score` on (called a person), dim
+/// below.
+void drawDetectionScore(cv::Mat& img, const View& view, const ObjectRow& detection,
+                        double person_score);
+
+/// A labelled object's box (fixed frame): its footprint, `yaw` along its length, and its name.
+struct LabelBox {
+  double x = 0, y = 0, yaw = 0, l = 0, w = 0;
+  std::string name;
+  bool person = false;  ///< drawn in the truth colour; other objects in the box colour
+};
+void drawLabelBox(cv::Mat& img, const View& view, const LabelBox& box);
 
 enum class LineStyle { Solid, Dashed };
 /// An object's path through its rows (time order).
@@ -66,7 +78,9 @@ enum class PointColours { ByHeight, RunLabels, TruthLabels };
 /// What each mark means, bottom left, or with `pick_corner` in the bottom corner that hides less
 /// of the picture (not in videos, where a legend jumping between corners distracts). `overlay`
 /// adds the path markers.
+/// `with_scores` names the detections' scores, `with_boxes` the labelled boxes' colours.
 void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detections, bool pick_corner,
-                PointColours points = PointColours::ByHeight);
+                PointColours points = PointColours::ByHeight, bool with_scores = false,
+                bool with_boxes = false);
 
 }  // namespace pedtrack::render

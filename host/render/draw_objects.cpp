@@ -1,4 +1,7 @@
 // Tracks, truth and detections: the objects drawn over the map.
+#include <mrpt/core/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -104,6 +107,29 @@ void drawDetection(cv::Mat& img, const View& view, const ObjectRow& d, int size_
       size_px > 0 ? size_px : std::max(9, static_cast<int>(std::lround(view.toPixels(0.3))));
   cv::drawMarker(img, view.pixel(d.x, d.y), colors::kDetection, cv::MARKER_TILTED_CROSS, size,
                  size_px > 0 && size_px < 8 ? 1 : 2, cv::LINE_AA);
+}
+
+void drawDetectionScore(cv::Mat& img, const View& view, const ObjectRow& d, double person_score) {
+  if (!std::isfinite(d.score)) return;
+  const bool person = d.score >= person_score;
+  const cv::Point p = view.pixel(d.x, d.y);
+  drawText(img, mrpt::format("%.2f", d.score), p + cv::Point(7, 4),
+           person ? colors::kDetection : colors::kDimText, person ? 0.42 : 0.32);
+}
+
+void drawLabelBox(cv::Mat& img, const View& view, const LabelBox& b) {
+  const double c = std::cos(b.yaw), s = std::sin(b.yaw);
+  std::vector<cv::Point> corners;
+  for (const auto& [u, v] : {std::pair{1, 1}, {-1, 1}, {-1, -1}, {1, -1}}) {
+    const double a = u * b.l / 2, q = v * b.w / 2;
+    corners.push_back(view.pixel(b.x + c * a - s * q, b.y + s * a + c * q));
+  }
+  const cv::Scalar colour = b.person ? colors::kTruth : colors::kLabelBox;
+  cv::polylines(img, corners, true, colour, b.person ? 2 : 1, cv::LINE_AA);
+  const cv::Point top =
+      *std::min_element(corners.begin(), corners.end(),
+                        [](const cv::Point& p, const cv::Point& q) { return p.y < q.y; });
+  drawText(img, b.name, top + cv::Point(-10, -6), colour, 0.42);
 }
 
 void drawPath(cv::Mat& img, const View& view, const std::vector<const ObjectRow*>& path,

@@ -51,7 +51,7 @@ void drawInfoPanel(cv::Mat& img, const std::vector<std::string>& lines) {
 }
 
 void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detections, bool pick_corner,
-                PointColours points) {
+                PointColours points, bool with_scores, bool with_boxes) {
   // One entry per mark: a glyph drawn by a small lambda, then its meaning.
   struct Entry {
     std::string text;
@@ -102,9 +102,19 @@ void drawLegend(cv::Mat& img, bool overlay, bool with_truth, bool with_detection
                          cv::ellipse(img, c, {8, 5}, 0, 0, 360, colors::kTruth, 1, cv::LINE_AA);
                        }});
   if (with_detections)
-    entries.push_back({"detection", [&](cv::Point c) {
+    entries.push_back({with_scores ? "detection, person score (bright: a person)" : "detection",
+                       [&](cv::Point c) {
                          cv::drawMarker(img, c, colors::kDetection, cv::MARKER_TILTED_CROSS, 10, 2);
                        }});
+  if (with_boxes) {
+    for (const bool person : {true, false})
+      entries.push_back({person ? "labelled person" : "labelled object (not a person)",
+                         [&img, person](cv::Point c) {
+                           cv::rectangle(img, c - cv::Point(9, 5), c + cv::Point(9, 5),
+                                         person ? colors::kTruth : colors::kLabelBox, 1,
+                                         cv::LINE_AA);
+                         }});
+  }
   if (overlay)
     entries.push_back({"path start / end", [&](cv::Point c) {
                          cv::circle(img, c - cv::Point(6, 0), 4, track, 1, cv::LINE_AA);

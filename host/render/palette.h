@@ -19,6 +19,8 @@ inline const cv::Scalar kSensor(255, 255, 255);  ///< sensor triangle (outlined 
 inline const cv::Scalar kSensorPath(150, 150, 150);
 inline const cv::Scalar kTruth(80, 230, 80);       ///< ground truth outlines and paths
 inline const cv::Scalar kDetection(40, 225, 255);  ///< detection crosses
+inline const cv::Scalar kDimText(150, 150, 150);   ///< scores of clusters not called persons
+inline const cv::Scalar kLabelBox(255, 190, 90);   ///< labelled objects that are not people
 inline const cv::Scalar kText(235, 235, 235);
 inline const cv::Scalar kOutline(0, 0, 0);   ///< behind text and markers, for contrast
 inline const cv::Scalar kPanel(45, 40, 38);  ///< legend and info panel fill

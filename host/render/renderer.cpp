@@ -24,7 +24,8 @@ void finish(cv::Mat& img, const Scene& s, const std::vector<std::string>& info, 
   const PointColours colours = !s.labels                            ? PointColours::ByHeight
                                : s.labels->kind() == LabelKind::Run ? PointColours::RunLabels
                                                                     : PointColours::TruthLabels;
-  drawLegend(img, overlay, s.truth != nullptr, s.detections != nullptr, !s.video, colours);
+  drawLegend(img, overlay, s.truth != nullptr, s.detections != nullptr, !s.video, colours,
+             s.scores && s.detections, bool(s.boxes));
 }
 
 // The frame's points, coloured by the label file when it has this frame.
@@ -80,8 +81,12 @@ cv::Mat renderFrame(const Scene& s, const Frame& frame) {
     const double t = std::isnan(tracks.t) ? frame.t : tracks.t;
     drawTrails(img, s.view, *s.tracks, t - s.trail_s, t, false);
   }
+  if (s.boxes)
+    for (const LabelBox& b : s.boxes(frame)) drawLabelBox(img, s.view, b);
   for (const ObjectRow* r : truth.rows) drawTruth(img, s.view, *r);
   for (const ObjectRow* r : detections.rows) drawDetection(img, s.view, *r);
+  if (s.scores)
+    for (const ObjectRow* r : detections.rows) drawDetectionScore(img, s.view, *r, s.person_score);
   for (const ObjectRow* r : tracks.rows) drawTrackBody(img, s.view, *r);
   drawSensor(img, s.view, frame.sensor_pose);
   for (const ObjectRow* r : tracks.rows) drawTrackMarker(img, s.view, *r);

@@ -1,9 +1,11 @@
 #pragma once
 // Composes whole pictures from the layers: one frame (a PNG, or one video frame) or the
 // trajectory overlay of a whole run.
+#include <functional>
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "draw.h"
 #include "label_source.h"
 #include "object_index.h"
 #include "pedtrack/frame.h"
@@ -23,6 +25,11 @@ struct Scene {
   double trail_s = 2;                       ///< s of track and truth history behind each frame
   bool video = false;                       ///< frames of a video: keep every mark in place
   LabelSource* labels = nullptr;            ///< per-point labels (--labels / --run), or null
+  /// Write each detection's score beside it (--scores); from person_score on it is a person's.
+  bool scores = false;
+  double person_score = 0.5;
+  /// Labelled objects of a frame (--kitti), fixed frame; empty when none.
+  std::function<std::vector<LabelBox>(const Frame&)> boxes;
 };
 
 /// One frame: points, sensor, the rows of the frame's tracks, truth and detections, and the

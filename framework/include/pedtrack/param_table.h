@@ -193,13 +193,13 @@ class ParamTable {
 
   /// A file that must exist before the first frame; required (relative to the pipeline file).
   template <class Access>
-  ParamTable& inputFile(Access member, std::string name, std::string doc) {
+  ParamTable& inputFile(Access member, std::string name, std::string doc, bool folder_ok = false) {
     Binding b;
     b.name = name;
     b.offset = offsetOf(member);
     b.size = sizeOf(member);
-    b.spec = [name = std::move(name), doc = std::move(doc)](const T&) {
-      return ParamSpec::inputFile(name, doc);
+    b.spec = [name = std::move(name), doc = std::move(doc), folder_ok](const T&) {
+      return ParamSpec::inputFile(name, doc, folder_ok);
     };
     b.read = [=](T& t, const ParamSet& p, const std::string& key) {
       get(member, t) = p.getString(key);

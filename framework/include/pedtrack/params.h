@@ -25,6 +25,7 @@ struct ParamSpec {
   std::vector<std::string> choices;  ///< Enum only
   std::size_t length = 0;            ///< Vector only: exact element count, 0 = any (≥ 1)
   std::string doc;                   ///< one line
+  bool folder_ok = false;            ///< InputFile only: a folder is accepted too
 
   // Fluent builders, so a plugin's declaration reads as a table.
   static ParamSpec boolean(std::string name, bool def, std::string doc);
@@ -39,8 +40,9 @@ struct ParamSpec {
   static ParamSpec vector(std::string name, std::optional<std::vector<double>> def,
                           std::string unit, std::size_t length, double min, double max,
                           std::string doc);
-  /// A file that must exist before the first frame (checked at validation time).
-  static ParamSpec inputFile(std::string name, std::string doc);
+  /// A file that must exist before the first frame (checked at validation time); with
+  /// `folder_ok` a folder too (a sequence of scans, one file each).
+  static ParamSpec inputFile(std::string name, std::string doc, bool folder_ok = false);
   bool required() const { return !default_value.has_value(); }
   /// "[0, 100]", "{realtime, max}", "9 × [0, 1]" or "" when anything of the type goes.
   std::string rangeText() const;

@@ -1,0 +1,222 @@
+#include "pedtrack/eval/kitti_labels.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "pedtrack/errors.h"
+
+namespace pedtrack::eval {
+namespace {
+
+// "KEY: v1 v2 ..." (or "KEY v1 v2 ...") lines of a calibration file, by key.
+std::map<std::string, std::vector<double>> calibLines(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw DataError(path + ": cannot open");
+  std::map<std::string, std::vector<double>> out;
+  std::string line;
+  int n = 0;
+  while (std::getline(f, line)) {
+    ++n;
+    std::istringstream is(line);
+    std::string key;
+    if (!(is >> key)) continue;
+    if (key.back() == ':') key.pop_back();
+    std::vector<double> v;
+    double d;
+    while (is >> d) v.push_back(d);
+    if (!is.eof())
+      throw DataError(path + ": line " + std::to_string(n) + " (" + key + "): not a number");
+    out[key] = std::move(v);
+  }
+  return out;
+}
+
+const std::vector<double>& need(const std::map<std::string, std::vector<double>>& lines,
+                                const std::string& path, std::initializer_list<const char*> keys,
+                                std::size_t count) {
+  for (const char* k : keys) {
+    const auto it = lines.find(k);
+    if (it == lines.end()) continue;
+    if (it->second.size() != count)
+      throw DataError(path + ": " + k + ": expected " + std::to_string(count) + " numbers, got " +
+                      std::to_string(it->second.size()));
+    return it->second;
+  }
+  throw DataError(path + ": no " + std::string(*keys.begin()) + " line");
+}
+
+// The object from a label line's values from `type` on (type truncated occluded alpha x1 y1 x2
+// y2 h w l x y z rotation_y).
+KittiObject fromFields(const std::vector<std::string>& f, std::size_t at, const KittiCalib& c,
+                       const std::string& where) {
+  if (f.size() < at + 15)
+    throw DataError(where + ": expected " + std::to_string(at + 15) + " values, got " +
+                    std::to_string(f.size()));
+  std::vector<double> v;
+  for (std::size_t i = at + 1; i < at + 15; ++i) {
+    char* end = nullptr;
+    v.push_back(std::strtod(f[i].c_str(), &end));
+    if (end == f[i].c_str() || *end) throw DataError(where + ": '" + f[i] + "' is not a number");
+  }
+  KittiObject o;
+  o.type = f[at];
+  o.truncated = v[0];
+  o.occluded = int(v[1]);
+  o.h = v[7], o.w = v[8], o.l = v[9];
+  const Eigen::Vector3d p = c.veloFromRect({v[10], v[11], v[12]});
+  o.x = p.x(), o.y = p.y(), o.z = p.z();
+  // rotation_y turns the box about the camera's y (down) axis from the camera's x (right):
+  // in the Velodyne frame (x forward, z up) that is -rotation_y - pi/2.
+  o.yaw = std::remainder(-v[13] - M_PI / 2, 2 * M_PI);
+  return o;
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::istringstream is(line);
+  std::vector<std::string> f;
+  std::string s;
+  while (is >> s) f.push_back(s);
+  return f;
+}
+
+}  // namespace
+
+Eigen::Vector3d KittiCalib::veloFromRect(const Eigen::Vector3d& rect) const {
+  const Eigen::Vector3d cam = R0.inverse() * rect;
+  const Eigen::Matrix3d R = velo_to_cam.leftCols<3>();
+  return R.transpose() * (cam - velo_to_cam.col(3));
+}
+
+bool KittiCalib::inCameraView(const Eigen::Vector3d& velo) const {
+  const Eigen::Vector3d rect = R0 * (velo_to_cam.leftCols<3>() * velo + velo_to_cam.col(3));
+  if (rect.z() <= 0.1) return false;
+  const Eigen::Vector3d uvw = P2.leftCols<3>() * rect + P2.col(3);
+  const double u = uvw.x() / uvw.z();
+  return u >= 0 && u <= 2 * P2(0, 2);
+}
+
+KittiCalib readKittiCalib(const std::string& path) {
+  const auto lines = calibLines(path);
+  KittiCalib c;
+  const auto& p2 = need(lines, path, {"P2"}, 12);
+  const auto& r0 = need(lines, path, {"R0_rect", "R_rect"}, 9);
+  const auto& tr = need(lines, path, {"Tr_velo_to_cam", "Tr_velo_cam"}, 12);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) {
+      c.P2(i, j) = p2[std::size_t(4 * i + j)];
+      c.velo_to_cam(i, j) = tr[std::size_t(4 * i + j)];
+      if (j < 3) c.R0(i, j) = r0[std::size_t(3 * i + j)];
+    }
+  if (std::abs(c.R0.determinant() - 1) > 0.01 ||
+      std::abs(c.velo_to_cam.leftCols<3>().determinant() - 1) > 0.01)
+    throw DataError(path + ": R0_rect or Tr_velo_to_cam is not a rotation");
+  return c;
+}
+
+bool KittiObject::contains(double px, double py, double margin) const {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  const double dx = px - x, dy = py - y;
+  const double along = c * dx + s * dy, across = -s * dx + c * dy;
+  return std::abs(along) <= l / 2 + margin && std::abs(across) <= w / 2 + margin;
+}
+
+std::vector<KittiObject> readKittiObjectLabels(const std::string& path, const KittiCalib& calib,
+                                               long frame) {
+  std::ifstream f(path);
+  if (!f) throw DataError(path + ": cannot open");
+  std::vector<KittiObject> out;
+  std::string line;
+  for (int n = 1; std::getline(f, line); ++n) {
+    const auto fields = split(line);
+    if (fields.empty()) continue;
+    KittiObject o = fromFields(fields, 0, calib, path + ": line " + std::to_string(n));
+    o.frame = frame;
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+std::vector<KittiObject> readKittiTrackingLabels(const std::string& path, const KittiCalib& calib) {
+  std::ifstream f(path);
+  if (!f) throw DataError(path + ": cannot open");
+  std::vector<KittiObject> out;
+  std::string line;
+  for (int n = 1; std::getline(f, line); ++n) {
+    const auto fields = split(line);
+    if (fields.empty()) continue;
+    const std::string where = path + ": line " + std::to_string(n);
+    if (fields.size() < 2) throw DataError(where + ": expected frame track_id type ...");
+    KittiObject o = fromFields(fields, 2, calib, where);
+    char* end = nullptr;
+    o.frame = std::strtol(fields[0].c_str(), &end, 10);
+    if (*end || o.frame < 0) throw DataError(where + ": frame '" + fields[0] + "' is not a frame");
+    o.track = std::strtol(fields[1].c_str(), &end, 10);
+    if (*end) throw DataError(where + ": track id '" + fields[1] + "' is not a number");
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+std::map<long, KittiScanLabels> readKittiObjectDir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  const fs::path labels = fs::path(dir) / "label_2", calibs = fs::path(dir) / "calib";
+  if (!fs::is_directory(labels))
+    throw DataError(labels.string() + ": no such folder (the KITTI object benchmark's labels)");
+  std::map<long, KittiScanLabels> out;
+  for (const auto& e : fs::directory_iterator(labels)) {
+    const std::string stem = e.path().stem().string();
+    if (e.path().extension() != ".txt" || stem.empty() || stem.size() > 18 ||
+        !std::all_of(stem.begin(), stem.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      continue;
+    const long n = std::stol(stem);
+    const fs::path calib = calibs / e.path().filename();
+    if (!fs::is_regular_file(calib))
+      throw DataError(calib.string() + ": missing (the calibration of " + e.path().string() + ")");
+    KittiScanLabels& s = out[n];
+    s.calib = readKittiCalib(calib.string());
+    s.objects = readKittiObjectLabels(e.path().string(), s.calib, n);
+  }
+  if (out.empty()) throw DataError(labels.string() + ": no label files (NNNNNN.txt)");
+  return out;
+}
+
+}  // namespace pedtrack::eval
+
+namespace pedtrack::eval {
+
+KittiFrameMatch matchKittiFrame(long frame, std::vector<KittiObject> objects,
+                                const KittiCalib& calib, std::vector<KittiCalled> called,
+                                double margin) {
+  KittiFrameMatch m;
+  m.frame = frame;
+  m.objects = std::move(objects);
+  m.called = std::move(called);
+  m.detected_by.assign(m.objects.size(), -1);
+  for (std::size_t c = 0; c < m.called.size(); ++c) {
+    KittiCalled& k = m.called[c];
+    // The cluster's centroid sits at about half a person's height; the camera's view is tested
+    // at the road (the box's bottom) and at that height alike.
+    k.in_view = calib.inCameraView({k.x, k.y, -1.0}) || calib.inCameraView({k.x, k.y, 0.0});
+    for (int pass = 0; pass < 2 && k.object < 0; ++pass)
+      for (std::size_t i = 0; i < m.objects.size(); ++i) {
+        const KittiObject& o = m.objects[i];
+        if (o.dontCare() || o.person() != (pass == 0)) continue;
+        if (o.contains(k.x, k.y, margin)) {
+          k.object = int(i);
+          break;
+        }
+      }
+    if (k.object >= 0) {
+      int& best = m.detected_by[std::size_t(k.object)];
+      if (best < 0 || m.called[std::size_t(best)].score < k.score) best = int(c);
+    }
+  }
+  return m;
+}
+
+}  // namespace pedtrack::eval
