@@ -17,6 +17,7 @@
 #include "pedtrack/errors.h"
 #include "pedtrack/ini_text.h"
 #include "pedtrack/plugin_registry.h"
+#include "pedtrack/sim/scenario.h"
 
 namespace pedtrack::cli {
 namespace {
@@ -81,6 +82,22 @@ std::string cliMarkdown() {
   return o;
 }
 
+// What each object type is made of, and what the scanner physics keys do.
+std::string objectTypesMarkdown() {
+  std::string o =
+      "\n## Object types\n\nWhat `[object.NAME] type` and `[clutter] types` build (sizes given as "
+      "ranges are drawn per object from a stream of the scene's own). Foliage returns come from "
+      "inside its volume, at an exponential depth of mean `foliage` along the beam, and a beam "
+      "deeper than the volume passes through: porous, noisy and different in every scan, as "
+      "leaves in the wind. Every surface draws its reflectivity (the VLP-16's intensity) once "
+      "from its class's range, the ranges overlapping (`sim/reflectivity.h`); with `[sensor] "
+      "dark_dropout` a dark surface fades out at shorter range, and with `mixed_pixels` a beam "
+      "at a depth edge may return a range between the two surfaces.\n\n| type | what it is |\n"
+      "|---|---|\n";
+  for (const auto& [type, doc] : sim::objectTypeDocs()) o += "| `" + type + "` | " + doc + " |\n";
+  return o;
+}
+
 // The shipped scenarios (configs/scenarios/*.ini) with their own [scenario] description.
 std::string shippedScenarios(const std::string& configs) {
   std::vector<fs::path> files;
@@ -111,7 +128,7 @@ std::string scenariosMarkdown(const std::string& configs) {
          "sections or keys, missing required keys and bad values stop with one line naming "
          "file, section and key. `pedtrack sim SCENARIO.ini --out DIR` writes the rawlog and "
          "the truth; `pedtrack run PIPELINE.ini --input SCENARIO.ini` runs a pipeline on it.\n" +
-         scenarioKeysMarkdown() + shippedScenarios(configs);
+         scenarioKeysMarkdown() + objectTypesMarkdown() + shippedScenarios(configs);
 }
 
 void write(const std::string& path, const std::string& text) {

@@ -5,6 +5,21 @@
 
 namespace pedtrack::sim {
 
+double RayCaster::intoFoliage(const Primitive& p, double t, const Eigen::Vector3d& o,
+                              const Eigen::Vector3d& d) {
+  // How deep the ray gets before a leaf returns it: exponential with the mean free path. Deeper
+  // than the volume along the ray (a sphere's chord; a box's or a cylinder's smaller width), the
+  // ray has passed through.
+  const double depth = std::exponential_distribution<double>(1.0 / p.foliage)(foliage_rng_);
+  double chord = 2 * std::min(p.ru, p.rv);
+  if (p.shape == Shape::Sphere) {
+    const Eigen::Vector3d oc = p.a - o;
+    const double along = oc.dot(d), miss2 = oc.squaredNorm() - along * along;
+    chord = 2 * std::sqrt(std::max(0.0, p.ru * p.ru - miss2));
+  }
+  return depth > chord ? kNoHit : t + depth;
+}
+
 void RayCaster::cast(const mrpt::poses::CPose3D& sensor,
                      std::initializer_list<const std::vector<Primitive>*> scene,
                      const Ground& ground, double max_range, RangeImage& out) {
@@ -49,7 +64,8 @@ void RayCaster::cast(const mrpt::poses::CPose3D& sensor,
         for (int k = 0; k < nr; ++k)
           for (int c = ranges[2 * k]; c <= ranges[2 * k + 1]; ++c) {
             const std::size_t i = static_cast<std::size_t>(r) * rays.cols() + c;
-            const double t = intersect(p, o, dirs[i]);
+            double t = intersect(p, o, dirs[i]);
+            if (p.foliage > 0 && t < kNoHit) t = intoFoliage(p, t, o, dirs[i]);
             if (t < out.range[i] && t <= max_range) {
               out.range[i] = t;
               out.owner[i] = p.owner;

@@ -15,6 +15,7 @@
 #include "pedtrack/sim/crowd.h"
 #include "pedtrack/text.h"
 #include "scenario_keys.h"
+#include "scene_objects.h"
 
 namespace pedtrack::sim {
 namespace {
@@ -80,70 +81,24 @@ std::string personScript(const PersonKeys& k, const ParamSet& p, unsigned long s
   return shapeScript(k.path, k.length, k.radius, k.angle, int(k.repeats));
 }
 
-// The radius of a round object (pole, bin, tree trunk): `radius`, else its type's default.
-double roundRadius(const std::string& type, double radius) {
-  if (radius > 0) return radius;
-  return type == "bin" ? 0.25 : type == "tree" ? 0.15 : 0.05;
-}
-
-// `where` starts the error about a wall without length ("file: [section] key").
-void addObject(Scenario& s, const std::string& type, double x, double y, const std::string& where,
-               double x2, double y2, double radius, double height, double yaw, double width,
-               double depth, double thickness, double crown) {
-  auto h = [&](double def) { return height > 0 ? height : def; };
-  const int owner = objectOwner(++s.object_count);
-  if (type == "wall") {
-    // Split long walls into ≤1 m boxes so ray culling stays tight.
-    const double len = std::hypot(x2 - x, y2 - y);
-    if (len < 1e-6) throw ConfigError(where + ": a wall needs two ends");
-    const int n = std::max(1, static_cast<int>(std::ceil(len)));
-    const double a = std::atan2(y2 - y, x2 - x);
-    for (int i = 0; i < n; ++i) {
-      const double u = (i + 0.5) / n;
-      s.objects.push_back(Primitive::box(x + u * (x2 - x), y + u * (y2 - y), a, 0.5 * len / n,
-                                         0.5 * thickness, 0, h(2.5), owner));
-    }
-  } else if (type == "pole") {
-    const double r = roundRadius(type, radius);
-    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(2.5), owner));
-  } else if (type == "bin") {
-    const double r = roundRadius(type, radius);
-    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, h(0.9), owner));
-  } else if (type == "box") {
-    s.objects.push_back(Primitive::box(x, y, yaw, 0.5 * width, 0.5 * depth, 0, h(0.8), owner));
-  } else if (type == "tree") {
-    const double r = roundRadius(type, radius), top = h(5.0);
-    const double cr = std::min(crown, 0.5 * top);
-    s.objects.push_back(Primitive::ellipticCylinder(x, y, 0, r, r, 0, top - cr, owner));
-    if (cr > 0) s.objects.push_back(Primitive::sphere({x, y, top - cr}, cr, owner));
-  }
-}
-
-// How close (m) the robot's path comes to the surface, at leg height, of a clutter object of
-// addObject's parameters (its 2D footprint: a tree by its trunk); INFINITY without a path.
-double robotPathDistance(const Trajectory& path, const std::string& type, double x, double y,
-                         double x2, double y2, double radius, double width, double depth,
-                         double thickness) {
-  double best = INFINITY;
-  for (const MotionSample& m : path.samples()) {
-    const Eigen::Vector2d r(m.x, m.y);
-    double d;
-    if (type == "wall") {
-      const Eigen::Vector2d p0(x, y), p1(x2, y2), e = p1 - p0;
-      const double u = std::clamp((r - p0).dot(e) / e.squaredNorm(), 0.0, 1.0);
-      d = (r - (p0 + u * e)).norm() - 0.5 * thickness;
-    } else if (type == "box") {
-      d = (r - Eigen::Vector2d(x, y)).norm() - 0.5 * std::hypot(width, depth);
-    } else {
-      d = (r - Eigen::Vector2d(x, y)).norm() - roundRadius(type, radius);
-    }
-    best = std::min(best, d);
-  }
-  return best;
-}
-
 // The [crowd]: random people, placed apart from each other and from the objects, moving by the
 // social force model (default) or by independent random-walk scripts.
+// Walking beside `leader`, `offset` m to the left of their facing, at their pace (the velocity
+// is the offset path's own).
+Trajectory companionPath(const Trajectory& leader, double offset) {
+  std::vector<MotionSample> out = leader.samples();
+  for (auto& m : out) {
+    m.x -= offset * std::sin(m.yaw);
+    m.y += offset * std::cos(m.yaw);
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const std::size_t a = k ? k - 1 : k, b = std::min(out.size() - 1, k + 1);
+    const double dt = out[b].t - out[a].t;
+    if (dt > 0) out[k].vx = (out[b].x - out[a].x) / dt, out[k].vy = (out[b].y - out[a].y) / dt;
+  }
+  return Trajectory::fromSamples(std::move(out));
+}
+
 void addCrowd(Scenario& s, const ParamSet& p, std::mt19937& rng) {
   const CrowdKeys cr = crowdTable().read(p);
   const std::string area_where = crowdTable().where(p, &CrowdKeys::area);
@@ -208,6 +163,25 @@ void addCrowd(Scenario& s, const ParamSet& p, std::mt19937& rng) {
     const CrowdArea area{a[0], a[1], a[2], a[3], cr.max_stop, cr.facing_rate};
     auto paths = simulateCrowd(agents, obstacles, &s.robot.path, s.duration, area, rng);
     for (std::size_t i = 0; i < people.size(); ++i) people[i].path = std::move(paths[i]);
+  }
+  // Carried items and companions from a stream of their own: a crowd without them draws as
+  // before.
+  std::mt19937_64 extra(s.seed ^ 0x3c6ef372fe94f82bull);
+  std::uniform_real_distribution<double> e01(0, 1);
+  const std::size_t walkers = people.size();
+  for (std::size_t i = 0; i < walkers; ++i) {
+    if (cr.carry_share > 0 && e01(extra) < cr.carry_share) {
+      const double k = e01(extra);
+      people[i].body.carry = k < 0.6 ? Carry::Bag : k < 0.8 ? Carry::Suitcase : Carry::Pram;
+    }
+    if (cr.pair_share <= 0 || e01(extra) >= cr.pair_share) continue;
+    PersonSpec c;
+    c.id = static_cast<int>(s.people.size() + people.size()) + 1;
+    c.body = people[i].body;
+    c.body.carry = Carry::None;
+    c.body.height = std::clamp(c.body.height + 0.15 * (e01(extra) - 0.5), 1.0, 2.0);
+    c.path = companionPath(people[i].path, 0.6 + 0.15 * e01(extra));
+    people.push_back(std::move(c));
   }
   for (auto& p : people) s.people.push_back(std::move(p));
 }
@@ -287,6 +261,8 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
   if (se.rate > 0) s.sensor.rate = se.rate;
   if (se.range_noise >= 0) s.sensor.range_noise = se.range_noise;
   s.sensor.dropout = se.dropout;
+  s.sensor.dark_dropout = se.dark_dropout;
+  s.sensor.mixed_pixels = se.mixed_pixels;
   if (!se.label.empty()) s.sensor.label = se.label;
   s.sensor.sweep_motion = se.sweep_motion;
   for (double SensorKeys::*k : {&SensorKeys::fov, &SensorKeys::resolution})
@@ -329,10 +305,14 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
 
   std::mt19937 rng(static_cast<unsigned>(s.seed));
   std::uniform_real_distribution<double> u01(0, 1);
+  // The street objects' sizes and layouts: a stream of their own, so the scene's other draws
+  // (clutter places, the crowd) stay as they were.
+  std::mt19937_64 details(s.seed ^ 0x2545f4914f6cdd1dull);
   for (const auto& [sec, p] : objects) {
     const ObjectKeys o = objectTable().read(p);
-    addObject(s, o.type, o.x, o.y, objectTable().where(p, &ObjectKeys::x2), o.x2, o.y2, o.radius,
-              o.height, o.yaw, o.width, o.depth, o.thickness, o.crown);
+    ObjectRequest r{o.type, o.x,     o.y,     o.x2,        o.y2,    o.radius, o.height,
+                    o.yaw,  o.width, o.depth, o.thickness, o.crown, o.foliage};
+    addObject(s, r, objectTable().where(p, &ObjectKeys::x2), details);
   }
   if (single.count("clutter")) {
     const ParamSet& cl_set = single.at("clutter");
@@ -340,8 +320,9 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
     const std::string types_where = clutterTable().where(cl_set, &ClutterKeys::types);
     const auto a = parseNumbers(cl.area, 4, clutterTable().where(cl_set, &ClutterKeys::area));
     const auto types = splitList(cl.types);
+    const auto& known = objectTypes();
     for (const auto& t : types)
-      if (t != "pole" && t != "box" && t != "bin" && t != "tree" && t != "wall")
+      if (std::find(known.begin(), known.end(), t) == known.end())
         throw ConfigError(types_where + ": unknown object type '" + t + "'");
     if (types.empty()) throw ConfigError(types_where + ": empty");
     std::vector<double> heights;
@@ -367,15 +348,22 @@ Scenario scenarioFromText(const std::string& raw_text, const std::string& file,
       const double depth = 0.3 + 0.5 * u01(rng);
       const double crown = 1.0 + u01(rng);
       const double height = heights.empty() ? 0 : heights[0] + (heights[1] - heights[0]) * u01(rng);
+      // A wall is 2 m long; a facade or a hedge as long as real ones (their own stream).
+      const double len = t == "facade"  ? std::uniform_real_distribution<double>(6, 15)(details)
+                         : t == "hedge" ? std::uniform_real_distribution<double>(2, 6)(details)
+                                        : 2.0;
+      ObjectRequest r{t, x, y, 0, 0, radius, height, yaw, width, depth, 0.15, crown, cl.foliage};
+      auto place = [&] {
+        r.x = x, r.y = y, r.x2 = x + len * std::cos(yaw), r.y2 = y + len * std::sin(yaw);
+      };
+      place();
       for (int tries = 0; clearance > 0 && tries < 1000; ++tries) {
-        const double gap = robotPathDistance(s.robot.path, t, x, y, x + 2 * std::cos(yaw),
-                                             y + 2 * std::sin(yaw), radius, width, depth, 0.15);
-        if (gap >= clearance) break;
+        if (robotPathDistance(s.robot.path, r) >= clearance) break;
         x = a[0] + (a[2] - a[0]) * u01(redraw);
         y = a[1] + (a[3] - a[1]) * u01(redraw);
+        place();
       }
-      addObject(s, t, x, y, types_where, x + 2 * std::cos(yaw), y + 2 * std::sin(yaw), radius,
-                height, yaw, width, depth, 0.15, crown);
+      addObject(s, r, types_where, details);
     }
   }
   if (single.count("crowd")) addCrowd(s, single.at("crowd"), rng);

@@ -39,7 +39,16 @@ const ParamTable<BodySpec>& bodyTable() {
           .real(&P::step_width, "step_width", "m", 0.0, 0.6, "lateral distance between the feet")
           .real(&P::cadence, "cadence", "steps/s", 0, 5,
                 "steps per second (0: speed / step_length)")
-          .real(&P::leg_radius, "leg_radius", "m", 0.02, 0.15, "leg radius");
+          .real(&P::leg_radius, "leg_radius", "m", 0.02, 0.15, "leg radius")
+          .choice(&P::carry, "carry",
+                  {{"none", Carry::None},
+                   {"bag", Carry::Bag},
+                   {"suitcase", Carry::Suitcase},
+                   {"pram", Carry::Pram}},
+                  "what they carry: a bag in the right hand, a suitcase pulled behind, a pram "
+                  "pushed ahead (its points are the person's)")
+          .boolean(&P::sitting, "sitting",
+                   "seated 0.45 m up, thighs forward (give a still path: on a bench)");
   return t;
 }
 
@@ -85,6 +94,14 @@ const ParamTable<SensorKeys>& sensorTable() {
           .real(&P::min_range, "min_range", "m", -1, 100, "minimum range (-1: model default)")
           .real(&P::range_noise, "range_noise", "m", -1, 1, "1σ range noise (-1: model default)")
           .real(&P::dropout, "dropout", "", 0, 1, "probability that a return is lost")
+          .boolean(&P::dark_dropout, "dark_dropout",
+                   "dark surfaces return less far: a surface of reflectivity R (0-100) is seen "
+                   "to half max_range x sqrt(R / 10), its returns fading out over the last fifth "
+                   "(a VLP-16 sees 10 % reflectivity to ~50 m, black clothing to ~25 m)")
+          .real(&P::mixed_pixels, "mixed_pixels", "", 0, 1,
+                "probability that a return at a depth edge (its neighbour in the ring 0.3-1.5 m "
+                "farther or nearer: surfaces the pulse cannot tell apart) lands between the two "
+                "surfaces, as a beam that hits both does")
           .text(&P::label, "label", "MRPT sensorLabel (default LASER / VELODYNE)")
           .boolean(&P::sweep_motion, "sweep_motion",
                    "people move during the sweep: each is seen when the beam passes it");
@@ -173,7 +190,12 @@ const ParamTable<CrowdKeys>& crowdTable() {
           .real(&P::facing_rate, "facing_rate", "deg/s", 1, 2000,
                 "how fast bodies turn to a new walking direction", kDegree)
           .real(&P::child_share, "child_share", "", 0, 1,
-                "share of children (1.0-1.45 m tall, narrower torso, shorter steps)");
+                "share of children (1.0-1.45 m tall, narrower torso, shorter steps)")
+          .real(&P::carry_share, "carry_share", "", 0, 1,
+                "share of walkers carrying something: a bag (3 in 5), a suitcase or a pram")
+          .real(&P::pair_share, "pair_share", "", 0, 1,
+                "share of walkers with a companion walking beside them, 0.6-0.75 m to their "
+                "left (pairs and, when companions pair again, groups)");
   return t;
 }
 
@@ -186,21 +208,34 @@ const ParamTable<ObjectKeys>& objectTable() {
                    {"pole", "pole"},
                    {"box", "box"},
                    {"bin", "bin"},
-                   {"tree", "tree"}},
-                  "object kind")
+                   {"tree", "tree"},
+                   {"facade", "facade"},
+                   {"hedge", "hedge"},
+                   {"bush", "bush"},
+                   {"car", "car"},
+                   {"van", "van"},
+                   {"bicycle", "bicycle"},
+                   {"bench", "bench"},
+                   {"signpost", "signpost"}},
+                  "object kind (docs/scenarios.md: what each is made of)")
           .real(&P::x, "x", "m", -kInf, kInf, "position (a wall's first end)")
           .required()
           .real(&P::y, "y", "m", -kInf, kInf, "position (a wall's first end)")
           .required()
-          .real(&P::x2, "x2", "m", -kInf, kInf, "a wall's second end")
-          .real(&P::y2, "y2", "m", -kInf, kInf, "a wall's second end")
+          .real(&P::x2, "x2", "m", -kInf, kInf, "a wall's, facade's or hedge's second end")
+          .real(&P::y2, "y2", "m", -kInf, kInf, "a wall's, facade's or hedge's second end")
           .real(&P::thickness, "thickness", "m", 0.01, 10, "wall thickness")
           .real(&P::radius, "radius", "m", 0, 50, "pole/bin/trunk radius (0: 0.05 / 0.25 / 0.15)")
           .real(&P::crown, "crown", "m", 0, 50, "tree crown radius")
           .real(&P::width, "width", "m", 0.01, 100, "box size along its yaw")
           .real(&P::depth, "depth", "m", 0.01, 100, "box size across its yaw")
           .real(&P::height, "height", "m", 0, 100, "height (0: type default)")
-          .real(&P::yaw, "yaw", "deg", -360, 360, "box orientation", kDegree);
+          .real(&P::yaw, "yaw", "deg", -360, 360,
+                "orientation of a box, car, van, bicycle, bench or sign", kDegree)
+          .real(&P::foliage, "foliage", "m", -1, 100,
+                "mean free path of a ray in foliage (tree crown, bush, hedge): returns come from "
+                "inside the volume, some rays pass through; 0: solid; -1: the type's (trees "
+                "solid, bushes and hedges 0.3)");
   return t;
 }
 
@@ -219,7 +254,10 @@ const ParamTable<ClutterKeys>& clutterTable() {
           .real(&P::robot_clearance, "robot_clearance", "m", 0, 100,
                 "an object drawn closer than this (its surface at leg height) to the [robot]'s "
                 "path is drawn again elsewhere, from a stream of its own (the crowd and the other "
-                "objects stay as without it): a robot does not drive through furniture; 0: off");
+                "objects stay as without it): a robot does not drive through furniture; 0: off")
+          .real(&P::foliage, "foliage", "m", -1, 100,
+                "the objects' foliage (as [object.NAME] foliage): -1 trees solid, bushes and "
+                "hedges 0.3 m");
   return t;
 }
 

@@ -26,6 +26,8 @@ struct SensorKeys {
   double rate = 0, fov = 0, resolution = 0, max_range = 0;  ///< Hz, rad, rad, m; 0: the model's
   double min_range = -1, range_noise = -1;                  ///< m; -1: the model's
   double dropout = 0;
+  bool dark_dropout = false;
+  double mixed_pixels = 0;
   std::string label;  ///< empty: LASER / VELODYNE
   bool sweep_motion = false;
 };
@@ -78,6 +80,7 @@ struct CrowdKeys {
   double max_stop = 3;
   double facing_rate = 150 * kDegree;  ///< rad/s
   double child_share = 0;
+  double carry_share = 0, pair_share = 0;
 };
 
 struct ObjectKeys {
@@ -86,8 +89,9 @@ struct ObjectKeys {
   double x2 = 0, y2 = 0, thickness = 0.15;
   double radius = 0;  ///< 0: the type's (roundRadius)
   double crown = 1.5, width = 0.6, depth = 0.4;
-  double height = 0;  ///< 0: the type's
-  double yaw = 0;     ///< rad
+  double height = 0;    ///< 0: the type's
+  double yaw = 0;       ///< rad
+  double foliage = -1;  ///< m, see ObjectRequest::foliage
 };
 
 struct ClutterKeys {
@@ -96,6 +100,7 @@ struct ClutterKeys {
   std::string types = "pole box bin tree";
   std::string heights;         ///< min max; empty: each type's height
   double robot_clearance = 0;  ///< m
+  double foliage = -1;         ///< m, see ObjectRequest::foliage
 };
 
 const ParamTable<ScenarioKeys>& scenarioTable();

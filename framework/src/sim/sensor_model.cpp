@@ -166,7 +166,7 @@ int RayTable::columnRanges(double azimuth, double half_width, int out[4]) const 
 }
 
 ObservationMaker::ObservationMaker(const SensorSpec& spec, unsigned long seed)
-    : spec_(spec), reflectivity_(seed) {}
+    : spec_(spec), reflectivity_(seed), physics_rng_(seed ^ 0xbb67ae8584caa73bull) {}
 
 mrpt::obs::CObservation::Ptr ObservationMaker::make(const RangeImage& img, double t,
                                                     std::mt19937_64& rng,

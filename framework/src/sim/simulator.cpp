@@ -31,7 +31,7 @@ GroundPlane groundInRobotFrame(const Ground& g, const mrpt::poses::CPose3D& robo
 Simulator::Simulator(Scenario scenario)
     : s_(std::move(scenario)),
       rays_(s_.sensor),
-      caster_(rays_),
+      caster_(rays_, s_.seed),
       maker_(s_.sensor, s_.seed),
       rng_(s_.seed) {
   frames_ = static_cast<std::size_t>(std::floor(s_.duration * s_.sensor.rate + 1e-9));
@@ -117,6 +117,7 @@ bool Simulator::next(SimFrame& f) {
   }
 
   caster_.cast(f.sensor_true, {&s_.objects, &people_}, s_.ground, s_.sensor.max_range, image_);
+  maker_.applyReturnPhysics(image_);
   ReturnTruth returns;
   returns.record_owners = point_truth_;
   returns.per_person.assign(s_.people.size() + 1, 0);

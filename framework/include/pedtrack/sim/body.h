@@ -10,6 +10,9 @@
 
 namespace pedtrack::sim {
 
+/// What a person carries: a bag in the right hand, a suitcase pulled behind, a pram pushed ahead.
+enum class Carry { None, Bag, Suitcase, Pram };
+
 struct BodySpec {
   double alpha = 0.20;        ///< torso semi-axis across the shoulders (m)
   double beta = 0.12;         ///< torso semi-axis front to back (m)
@@ -20,6 +23,8 @@ struct BodySpec {
   double cadence = 0;         ///< steps/s while walking; 0: speed / step_length
   double leg_radius = 0.055;  ///< m
   double arm_radius = 0.045;  ///< m
+  Carry carry = Carry::None;  ///< carried items count as the person (their points are theirs)
+  bool sitting = false;       ///< seated 0.45 m up, thighs forward (a person on a bench)
 };
 
 /// A posed body: its primitives and where its legs cross a reference height.

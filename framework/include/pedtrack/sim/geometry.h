@@ -31,6 +31,10 @@ struct Primitive {
   double ru = 0, rv = 0;
   double yaw = 0;
   double z0 = 0, z1 = 0;
+  /// m, foliage (a tree crown, a bush, a hedge): a ray that enters goes on for an exponential
+  /// depth of this mean before it returns, and passes through when that is deeper than the
+  /// volume; 0: a solid surface.
+  double foliage = 0;
 
   static Primitive ellipticCylinder(double x, double y, double yaw, double ru, double rv, double z0,
                                     double z1, int owner);

@@ -48,6 +48,9 @@ Scenario loadScenario(const std::string& path, long seed_override = -1);
 Scenario scenarioFromText(const std::string& text, const std::string& file,
                           long seed_override = -1);
 
+/// Every object type with what it is made of (documentation, in declaration order).
+const std::vector<std::pair<std::string, std::string>>& objectTypeDocs();
+
 /// Section kinds and their declared keys, in documentation order: "scenario", "sensor",
 /// "robot", "ground", "person.NAME", "crowd", "object.NAME", "clutter".
 const std::vector<std::pair<std::string, std::vector<ParamSpec>>>& scenarioKeys();

@@ -23,6 +23,8 @@ struct SensorSpec {
   double rate = 0;                      ///< Hz
   double range_noise = 0;               ///< m, 1σ
   double dropout = 0;                   ///< probability that a return is lost
+  bool dark_dropout = false;            ///< dark surfaces return less far (ReturnPhysics)
+  double mixed_pixels = 0;              ///< probability of a mixed return at a depth edge
   std::string label;                    ///< MRPT sensorLabel
   bool sweep_motion = false;            ///< pose people when the beam passes, not at the stamp
   mrpt::poses::CPose3D mount;           ///< sensor on the robot
@@ -84,6 +86,10 @@ class ObservationMaker {
   /// `truth.per_person` must be sized to the largest person id + 1; `owners` is filled.
   mrpt::obs::CObservation::Ptr make(const RangeImage& img, double t, std::mt19937_64& rng,
                                     ReturnTruth& truth) const;
+  /// What a real scanner's physics does to the cast ranges before the device encodes them
+  /// (dark_dropout, mixed_pixels; return_physics.cpp), from a stream of its own: off, the
+  /// image is untouched and every other draw is as without it.
+  void applyReturnPhysics(RangeImage& img) const;
 
  private:
   mrpt::obs::CObservation::Ptr make2D(const RangeImage& img, double t, std::mt19937_64& rng,
@@ -92,6 +98,7 @@ class ObservationMaker {
                                             ReturnTruth& truth) const;
   SensorSpec spec_;
   mutable Reflectivity reflectivity_;  // the VLP-16's intensity byte
+  mutable std::mt19937_64 physics_rng_;
 };
 
 }  // namespace pedtrack::sim
