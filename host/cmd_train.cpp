@@ -1,5 +1,5 @@
-// `pedtrack train knn|svm`: builds a classifier model from labelled clusters — a dataset file
-// (configs/training/*.ini), or recordings and scenarios named on the command line — and writes
+// `pedtrack train knn|svm|forest`: builds a classifier model from labelled clusters — a dataset
+// file (configs/training/*.ini), or recordings and scenarios named on the command line — and writes
 // a self-describing model file (classify/model_file.h).
 #include <iostream>
 #include <sstream>
@@ -16,7 +16,7 @@ namespace pedtrack::cli {
 namespace {
 
 const char* kSynopsis =
-    "knn|svm [DATASET.ini] --out MODEL.yml [options]\n"
+    "knn|svm|forest [DATASET.ini] --out MODEL.yml [options]\n"
     "\n"
     "Labelled clusters come from a dataset file (configs/training/*.ini), from --samples, or\n"
     "from inputs given here. Retraining on your own sensor needs no hand labels:\n"
@@ -36,6 +36,7 @@ struct TrainArgs {
       features, metric = "mahalanobis", weighting = "inverse_distance";
   std::vector<std::string> sims, positives, negatives, plugin_path;
   long frame_step = 1, k = 5, minkowski_p = 2, max_prototypes = 2000, folds = 5, max_samples = 4000;
+  long trees = 200, max_depth = 16;
   unsigned long seed = 1;
   double min_range = 0, max_range = 0;
 };
@@ -150,7 +151,7 @@ classify::SampleSet loadSamples(const Dataset* d, const std::string& samples_csv
 int trainCommand(const std::vector<std::string>& args) {
   TrainArgs a;
   po::options_description o("options");
-  o.add_options()("kind", po::value(&a.kind), "knn or svm")(
+  o.add_options()("kind", po::value(&a.kind), "knn, svm or forest")(
       "dataset", po::value(&a.dataset), "dataset file (configs/training/*.ini)")(
       "out,o", po::value(&a.out), "model file to write (.yml)")(
       "save-samples", po::value(&a.save_samples), "also write the collected samples (CSV)")(
@@ -165,14 +166,19 @@ int trainCommand(const std::vector<std::string>& args) {
       "folds", po::value(&a.folds), "svm: cross-validation folds (grid search, calibration)")(
       "max-samples", po::value(&a.max_samples),
       "svm: train on at most this many samples (training time grows with their square)")(
+      "trees", po::value(&a.trees), "forest: trees (default 200)")(
+      "max-depth", po::value(&a.max_depth), "forest: deepest split (default 16)")(
       "quiet,q", "no progress output");
   addInputOptions(o, a);
   po::positional_options_description pos;
   pos.add("kind", 1).add("dataset", 1);
   po::variables_map vm;
   if (!parseOptions("train", kSynopsis, o, pos, args, vm)) return 0;
-  if (a.kind != "knn" && a.kind != "svm")
-    throw ConfigError("pedtrack train: first argument must be knn or svm (got '" + a.kind + "')");
+  if (a.kind != "knn" && a.kind != "svm" && a.kind != "forest")
+    throw ConfigError("pedtrack train: first argument must be knn, svm or forest (got '" + a.kind +
+                      "')");
+  if (a.trees < 1 || a.max_depth < 1)
+    throw ConfigError("pedtrack train: --trees and --max-depth must be at least 1");
   if (a.out.empty()) throw ConfigError("pedtrack train: missing --out MODEL.yml");
   const bool progress = !vm.count("quiet");
   std::string command = "pedtrack train";
@@ -217,6 +223,18 @@ int trainCommand(const std::vector<std::string>& args) {
               << " non-person prototypes of " << protos.dims() << " features (from " << persons
               << " + " << others << " samples), k = " << opt.k << ", " << a.metric << ", "
               << a.weighting << "\n";
+  } else if (a.kind == "forest") {
+    classify::ForestTraining t;
+    t.trees = int(a.trees);
+    t.max_depth = int(a.max_depth);
+    t.seed = a.seed;
+    info.features = s.features;
+    if (progress) std::cerr << "forest: " << t.trees << " trees on " << s.size() << " samples\n";
+    const auto forest = classify::ForestClassifier::train(s, t);
+    classify::saveForestModel(a.out, info, forest);
+    std::cout << "forest model " << a.out << ": " << t.trees << " trees of depth <= " << t.max_depth
+              << ", " << s.dims() << " features (trained on " << persons << " + " << others
+              << " samples)\n";
   } else {
     classify::SvmTraining t;
     t.folds = int(a.folds);

@@ -1,5 +1,6 @@
 // Voxel connected components (6/18/26 on hand-made grids, and against a breadth-first search on
 // random grids) and P2's cluster features by hand.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <map>
 #include <queue>
@@ -135,4 +136,40 @@ TEST_CASE("P2 features of a hand-made cluster", "[ccl][features]") {
   const seg::GroundAligned a(g);
   CHECK(a(2, 5, 0.5)(2) == Approx(0).margin(1e-12));  // z = 0.1·2 + 0.3 on the plane
   CHECK(a(2, 5, 1.5)(2) == Approx(n.z()).margin(1e-12));
+}
+
+TEST_CASE("shape features tell an upright person from a post and a car", "[ccl][features]") {
+  // A person 5 m ahead: legs (two columns 0.2 m apart) to 0.9 m, a 0.4 m-wide torso to 1.5 m, a
+  // 0.2 m head to 1.75 m; a post: one thin column to 2.5 m; a car: a 4 x 1.8 m box 0.3-1.4 m.
+  std::vector<Eigen::Vector3d> person, post, car;
+  for (double z = 0.05; z < 1.76; z += 0.05) {
+    const double half = z < 0.9 ? 0.1 : z < 1.5 ? 0.2 : 0.1;
+    for (double y = -half; y <= half + 1e-9; y += z < 0.9 ? 0.2 : 0.05) person.push_back({5, y, z});
+  }
+  for (double z = 0.05; z < 2.5; z += 0.05) post.push_back({5, 0, z});
+  for (double z = 0.3; z < 1.41; z += 0.1)
+    for (double y = -2; y <= 2; y += 0.1) car.push_back({5, y, z});
+  std::vector<double> fp, fo, fc;
+  seg::appendShapeFeatures(person, 0, 0, fp);
+  seg::appendShapeFeatures(post, 0, 0, fo);
+  seg::appendShapeFeatures(car, 0, 0, fc);
+  const auto& names = seg::shapeFeatureNames();
+  REQUIRE(fp.size() == names.size());
+  auto at = [&](const std::vector<double>& f, const std::string& n) {
+    return f[std::size_t(std::find(names.begin(), names.end(), n) - names.begin())];
+  };
+  CHECK(at(fp, "range") == Approx(5));
+  CHECK(at(fp, "zmin") == Approx(0.05));
+  CHECK(at(fo, "vertical") == Approx(1).margin(1e-6));   // a post's main axis is upright
+  CHECK(at(fo, "linearity") == Approx(1).margin(1e-6));  // ... and it is a line
+  CHECK(at(fc, "vertical") < 0.1);                       // a car's is along it
+  CHECK(at(fp, "w3") == Approx(0.4));                    // the torso slice 1.2-1.6 m
+  CHECK(at(fp, "w0") == Approx(0.2));                    // the legs
+  CHECK(at(fo, "w2") == Approx(0));
+  CHECK(at(fp, "head") == Approx(0.2 / 0.4));  // head 0.2 m over shoulders 0.4 m
+  CHECK(at(fo, "head") == Approx(1));
+  CHECK(at(fc, "p4") == 0);  // nothing of a car above 1.6 m
+  double share = 0;
+  for (int k = 0; k < 5; ++k) share += at(fp, "p" + std::to_string(k));
+  CHECK(share == Approx(1));
 }

@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "pedtrack/pipeline.h"
+#include "pedtrack/seg/cluster_features.h"
 #include "test_support.h"
 
 using namespace pedtrack;
@@ -93,7 +94,12 @@ TEST_CASE("irls_ground then voxel_ccl: ground labelled, two people, P2 features"
   for (std::size_t i = 0; i < ground; ++i) REQUIRE(f.point_labels[i] == PointLabel::Ground);
   REQUIRE(f.clusters.size() == 2);
   REQUIRE(f.cluster_feature_names);
-  CHECK(*f.cluster_feature_names == std::vector<std::string>{"h", "w", "d", "v", "lambda", "rho"});
+  // P2's six first (the shipped P2 models read them by name), then the shape features.
+  REQUIRE(f.cluster_feature_names->size() == 6 + seg::shapeFeatureNames().size());
+  CHECK(std::vector<std::string>(f.cluster_feature_names->begin(),
+                                 f.cluster_feature_names->begin() + 6) ==
+        std::vector<std::string>{"h", "w", "d", "v", "lambda", "rho"});
+  CHECK(f.clusterFeatureIndex("head") == int(f.cluster_feature_names->size()) - 1);
   CHECK(f.clusterFeatureIndex("h") == 0);
   CHECK(f.clusterFeatureIndex("rho") == 5);
   CHECK(f.clusterFeatureIndex("width") == -1);

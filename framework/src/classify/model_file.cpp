@@ -235,6 +235,16 @@ void saveSvmModel(const std::string& path, const ModelInfo& info, const SvmClass
   w.commit();
 }
 
+void saveForestModel(const std::string& path, const ModelInfo& info, const ForestClassifier& f) {
+  ModelWriter w(path, info);
+  auto& fs = w.fs();
+  fs << "forest"
+     << "{";
+  f.forest()->write(fs);
+  fs << "}";
+  w.commit();
+}
+
 namespace {
 
 // The loaders' bodies, on a reader already open and checked, so that loadScorer reads a file
@@ -296,6 +306,23 @@ LoadedSvm readSvm(ModelReader& r) {
   return m;
 }
 
+LoadedForest readForest(ModelReader& r) {
+  LoadedForest m;
+  m.info = r.info;
+  auto f = cv::ml::RTrees::create();
+  try {
+    f->read(r.node("forest"));
+  } catch (const cv::Exception& e) {
+    r.fail("bad 'forest' (" + oneLine(e.err) + ")");
+  }
+  try {
+    m.forest = std::make_unique<ForestClassifier>(f, m.info.features);
+  } catch (const DataError& e) {
+    r.fail(std::string("'forest' is missing or does not match the features (") + e.what() + ")");
+  }
+  return m;
+}
+
 }  // namespace
 
 LoadedKnn loadKnnModel(const std::string& path) {
@@ -306,6 +333,11 @@ LoadedKnn loadKnnModel(const std::string& path) {
 LoadedSvm loadSvmModel(const std::string& path) {
   ModelReader r(path, "svm");
   return readSvm(r);
+}
+
+LoadedForest loadForestModel(const std::string& path) {
+  ModelReader r(path, "forest");
+  return readForest(r);
 }
 
 std::string modelKind(const std::string& path) {
@@ -342,6 +374,19 @@ class SvmScorer : public Scorer {
   std::unique_ptr<SvmClassifier> svm_;
 };
 
+class ForestScorer : public Scorer {
+ public:
+  explicit ForestScorer(LoadedForest m) : info_(m.info), forest_(std::move(m.forest)) {}
+  const ModelInfo& info() const override { return info_; }
+  void score(const double* x, std::size_t n, std::vector<double>& out) const override {
+    forest_->probability(x, n, out);
+  }
+
+ private:
+  ModelInfo info_;
+  std::unique_ptr<ForestClassifier> forest_;
+};
+
 }  // namespace
 
 std::unique_ptr<Scorer> loadScorer(const std::string& path, const KnnOptions* knn) {
@@ -349,7 +394,8 @@ std::unique_ptr<Scorer> loadScorer(const std::string& path, const KnnOptions* kn
   const std::string kind = r.info.kind;
   if (kind == "knn") return std::make_unique<KnnScorer>(readKnn(r), knn);
   if (kind == "svm") return std::make_unique<SvmScorer>(readSvm(r));
-  throw ConfigError(path + ": unknown model kind '" + kind + "' (knn, svm)");
+  if (kind == "forest") return std::make_unique<ForestScorer>(readForest(r));
+  throw ConfigError(path + ": unknown model kind '" + kind + "' (knn, svm, forest)");
 }
 
 }  // namespace pedtrack::classify

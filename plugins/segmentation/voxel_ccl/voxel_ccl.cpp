@@ -55,6 +55,14 @@ const ParamTable<VoxelCclParams>& table() {
   return t;
 }
 
+// P2's six features, then the shape features (cluster_features.h).
+std::vector<std::string> featureNames() {
+  std::vector<std::string> n = seg::p2FeatureNames();
+  const auto& more = seg::shapeFeatureNames();
+  n.insert(n.end(), more.begin(), more.end());
+  return n;
+}
+
 class VoxelCcl : public Segmenter {
  public:
   explicit VoxelCcl(const PluginContext& ctx) : VoxelCcl(table().read(ctx.params)) {}
@@ -67,7 +75,7 @@ class VoxelCcl : public Segmenter {
         max_h_(p.max_height),
         min_points_(std::size_t(p.min_points)),
         connectivity_(p.connectivity),
-        names_(std::make_shared<const std::vector<std::string>>(seg::p2FeatureNames())) {}
+        names_(std::make_shared<const std::vector<std::string>>(featureNames())) {}
 
   void process(Frame& f) override {
     const auto& c = f.cloud();
@@ -139,6 +147,7 @@ class VoxelCcl : public Segmenter {
       seg::setCentroidAndExtent(cl, c);
       const seg::P2Features ft = seg::p2Features(pts, s.x(), s.y(), voxel_);
       cl.features = {ft.h, ft.w, ft.d, ft.v, ft.lambda, ft.rho};
+      seg::appendShapeFeatures(pts, s.x(), s.y(), cl.features);
       f.clusters.push_back(std::move(cl));
     }
   }
@@ -162,7 +171,9 @@ class VoxelCcl : public Segmenter {
 PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Segmenter;
-  d.doc = "Voxel connected components (P2 s3.2) with P2's features [h, w, d, v, lambda, rho]";
+  d.doc =
+      "Voxel connected components (P2 s3.2) with P2's features [h, w, d, v, lambda, rho] and "
+      "shape features (range, principal axes, height-slice profile, density, head)";
   d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<VoxelCcl>(ctx);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pedtrack/classify/forest.h"
 #include "pedtrack/classify/knn.h"
 #include "pedtrack/classify/svm.h"
 
@@ -19,7 +20,7 @@ constexpr int kModelFormatVersion = 1;
 
 /// What a model says about itself.
 struct ModelInfo {
-  std::string kind;                         ///< "knn" or "svm"
+  std::string kind;                         ///< "knn", "svm" or "forest"
   std::vector<std::string> features;        ///< names, in the order the classifier reads them
   std::string command;                      ///< the command line that trained it
   std::string dataset;                      ///< the training data (files, parts, labelling)
@@ -29,6 +30,7 @@ struct ModelInfo {
 
 void saveKnnModel(const std::string& path, const ModelInfo& info, const KnnClassifier& knn);
 void saveSvmModel(const std::string& path, const ModelInfo& info, const SvmClassifier& svm);
+void saveForestModel(const std::string& path, const ModelInfo& info, const ForestClassifier& f);
 
 struct LoadedKnn {
   ModelInfo info;
@@ -44,11 +46,17 @@ struct LoadedSvm {
 };
 LoadedSvm loadSvmModel(const std::string& path);
 
+struct LoadedForest {
+  ModelInfo info;
+  std::unique_ptr<ForestClassifier> forest;
+};
+LoadedForest loadForestModel(const std::string& path);
+
 /// The kind a model file holds ("knn" or "svm"), checking format and version.
 std::string modelKind(const std::string& path);
 
-/// Any model, scoring feature vectors: Q for k-NN, the calibrated probability for SVM (both in
-/// [0, 1], a person at ≥ 0.5 by default).
+/// Any model, scoring feature vectors: Q for k-NN, the calibrated probability for SVM, the share
+/// of trees voting person for a forest (all in [0, 1], a person at ≥ 0.5 by default).
 class Scorer {
  public:
   virtual ~Scorer();

@@ -46,4 +46,11 @@ const std::vector<std::string>& p2FeatureNames();
 P2Features p2Features(const std::vector<Eigen::Vector3d>& aligned, double su, double sv,
                       double pixel);
 
+/// The shape features voxel_ccl reports after P2's (shape_features.cpp): what separates a person
+/// from a post, a bush, a car or a wall fragment, and does not change with the sensor's density.
+const std::vector<std::string>& shapeFeatureNames();
+/// Appends them, in shapeFeatureNames() order, to `out`.
+void appendShapeFeatures(const std::vector<Eigen::Vector3d>& aligned, double su, double sv,
+                         std::vector<double>& out);
+
 }  // namespace pedtrack::seg
