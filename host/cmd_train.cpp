@@ -36,7 +36,7 @@ struct TrainArgs {
       features, metric = "mahalanobis", weighting = "inverse_distance";
   std::vector<std::string> sims, positives, negatives, plugin_path;
   long frame_step = 1, k = 5, minkowski_p = 2, max_prototypes = 2000, folds = 5, max_samples = 4000;
-  long trees = 200, max_depth = 16;
+  long trees = 100, max_depth = 10;
   unsigned long seed = 1;
   double min_range = 0, max_range = 0;
 };
@@ -166,8 +166,8 @@ int trainCommand(const std::vector<std::string>& args) {
       "folds", po::value(&a.folds), "svm: cross-validation folds (grid search, calibration)")(
       "max-samples", po::value(&a.max_samples),
       "svm: train on at most this many samples (training time grows with their square)")(
-      "trees", po::value(&a.trees), "forest: trees (default 200)")(
-      "max-depth", po::value(&a.max_depth), "forest: deepest split (default 16)")(
+      "trees", po::value(&a.trees), "forest: trees (default 100)")(
+      "max-depth", po::value(&a.max_depth), "forest: deepest split (default 10)")(
       "quiet,q", "no progress output");
   addInputOptions(o, a);
   po::positional_options_description pos;

@@ -27,7 +27,10 @@ struct ModelResult {
   std::vector<Label> y;
   Confusion c;
   double auc = 0;
-  RocPoint at_fpr, at_tpr;  // operating points: best detection at ≤ 5 % FP, least FP at ≥ 90 %
+  // Operating points: the best detection at ≤ at_fp false positives, the fewest false positives
+  // at ≥ at_detection detected (--at-fp, --at-detection); and at the defaults 5 % / 90 %.
+  RocPoint at_fpr, at_tpr, at_5pct_fpr, at_90pct_tpr;
+  double at_fp = 0.05, at_detection = 0.90;
 };
 
 void drawRoc(const std::string& path, const std::vector<ModelResult>& rs, double threshold) {
@@ -57,11 +60,12 @@ std::string table(const ModelResult& r, double threshold) {
       "  actual  nonperson       %12zu %8zu\n"
       "          person          %12zu %8zu\n"
       "  detection rate %.2f %% (%zu/%zu), false positive rate %.2f %% (%zu/%zu), AUC %.4f\n"
-      "  on the ROC curve: %.2f %% detected at <= 5 %% false positives (score >= %.3f); "
-      "%.2f %% false positives at >= 90 %% detected (score >= %.3f)\n",
+      "  on the ROC curve: %.2f %% detected at <= %g %% false positives (score >= %.3f); "
+      "%.2f %% false positives at >= %g %% detected (score >= %.3f)\n",
       r.label.c_str(), threshold, c.tn, c.fp, c.fn, c.tp, 100 * c.detectionRate(), c.tp,
       c.tp + c.fn, 100 * c.falsePositiveRate(), c.fp, c.fp + c.tn, r.auc, 100 * r.at_fpr.tpr,
-      r.at_fpr.threshold, 100 * r.at_tpr.fpr, r.at_tpr.threshold);
+      100 * r.at_fp, r.at_fpr.threshold, 100 * r.at_tpr.fpr, 100 * r.at_detection,
+      r.at_tpr.threshold);
 }
 
 }  // namespace
@@ -71,7 +75,7 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
   std::string dataset, samples, save_samples, pipeline, topic, labels_topic, region, roc, metric,
       weighting;
   long frame_step = 1, k = 0, minkowski_p = 0;
-  double min_range = 0, max_range = 0, threshold = 0.5;
+  double min_range = 0, max_range = 0, threshold = 0.5, at_fp = 0.05, at_detection = 0.90;
   po::options_description o("options");
   o.add_options()("model", po::value(&models)->composing(),
                   "model file to score (repeatable: compared on the same samples)")(
@@ -89,6 +93,10 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
       "min-range", po::value(&min_range), "leave out clusters nearer than this (m)")(
       "max-range", po::value(&max_range), "leave out clusters farther than this (m)")(
       "threshold", po::value(&threshold), "decision threshold on the score (default 0.5)")(
+      "at-fp", po::value(&at_fp),
+      "operating point: the best detection rate at at most this false-positive rate (0.05)")(
+      "at-detection", po::value(&at_detection),
+      "operating point: the fewest false positives at at least this detection rate (0.90)")(
       "k", po::value(&k), "knn models: neighbours instead of the model's")(
       "metric", po::value(&metric), "knn models: mahalanobis or minkowski instead of the model's")(
       "minkowski-p", po::value(&minkowski_p), "knn models: Minkowski level 1 or 2")(
@@ -104,6 +112,8 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
   if (models.empty()) throw ConfigError("pedtrack eval: missing --model");
   if (!(threshold >= 0 && threshold <= 1))
     throw ConfigError("--threshold: must be within [0, 1] for a classifier score");
+  if (!(at_fp >= 0 && at_fp <= 1) || !(at_detection >= 0 && at_detection <= 1))
+    throw ConfigError("--at-fp and --at-detection: must be rates within [0, 1]");
   const bool progress = !vm.count("quiet") && !vm.count("json");
 
   // Every model is read (and rejected) before the data is collected.
@@ -144,8 +154,11 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
     r.c = confusionAt(r.scores, r.y, threshold);
     r.auc = rocAuc(r.scores, r.y);
     const auto curve = rocCurve(r.scores, r.y);
-    r.at_fpr = bestAtFpr(curve, 0.05);
-    r.at_tpr = bestAtTpr(curve, 0.90);
+    r.at_fp = at_fp, r.at_detection = at_detection;
+    r.at_fpr = bestAtFpr(curve, at_fp);
+    r.at_tpr = bestAtTpr(curve, at_detection);
+    r.at_5pct_fpr = bestAtFpr(curve, 0.05);
+    r.at_90pct_tpr = bestAtTpr(curve, 0.90);
     rs.push_back(std::move(r));
   }
   if (!roc.empty()) drawRoc(roc, rs, threshold);
@@ -164,8 +177,12 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
       j.num("detection_rate", rs[i].c.detectionRate())
           .num("false_positive_rate", rs[i].c.falsePositiveRate())
           .num("auc", rs[i].auc)
-          .num("detection_rate_at_5pct_fp", rs[i].at_fpr.tpr)
-          .num("false_positive_rate_at_90pct_detection", rs[i].at_tpr.fpr);
+          .num("detection_rate_at_5pct_fp", rs[i].at_5pct_fpr.tpr)
+          .num("false_positive_rate_at_90pct_detection", rs[i].at_90pct_tpr.fpr)
+          .num("at_fp", at_fp)
+          .num("detection_rate_at_fp", rs[i].at_fpr.tpr)
+          .num("at_detection", at_detection)
+          .num("false_positive_rate_at_detection", rs[i].at_tpr.fpr);
       out += (i ? ", " : "") + j.str();
     }
     std::cout << out << "]}\n";

@@ -12,6 +12,8 @@ t=configs/training
 "$bin" train svm "$t/person3d_train.ini" --out models/person3d_svm.yml -q
 "$bin" train svm "$t/torso_train.ini" --out models/torso_svm.yml -q
 "$bin" train knn "$t/torso_train.ini" --out models/torso_knn.yml -q
+"$bin" train forest "$t/person3d_forest_train.ini" --out models/person3d_forest.yml -q
+gzip -f models/person3d_forest.yml
 if [ -d "$PEDTRACK_DATA/leg_tracker" ]; then
   "$bin" train knn "$t/legs_train.ini" --out models/legs_knn.yml -q
   "$bin" train svm "$t/legs_train.ini" --out models/legs_svm.yml -q

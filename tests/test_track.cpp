@@ -206,6 +206,30 @@ TEST_CASE("M-of-N confirms at M hits and deletes after misses", "[track]") {
   CHECK_FALSE(h.accepts(0.0, true));
 }
 
+TEST_CASE("score evidence confirms steady persons, not one high score", "[track]") {
+  CHECK(ScoreEvidence::logOdds(0.5) == Approx(0).margin(1e-12));
+  CHECK(ScoreEvidence::logOdds(0.9) == Approx(std::log(9.0)));
+  CHECK(ScoreEvidence::logOdds(1.0) == 3);  // held within ±3
+  CHECK(ScoreEvidence::logOdds(0.0) == -3);
+  // Scores of 0.9 (log-odds 2.197) reach 5 at the third scan.
+  ScoreEvidence person(5, -1);
+  person.add(true, 0.9);
+  person.add(true, 0.9);
+  CHECK_FALSE(person.confirmed());
+  person.add(true, 0.9);
+  CHECK(person.confirmed());
+  // One 0.99 then scores near 0.5 and a miss: never confirmed; scores of 0.3 refute it.
+  ScoreEvidence bush(5, -1);
+  bush.add(true, 0.99);
+  bush.add(true, 0.55);
+  bush.add(false, 0);
+  bush.add(true, 0.5);
+  CHECK_FALSE(bush.confirmed());
+  CHECK(bush.sum() == Approx(ScoreEvidence::logOdds(0.99) + ScoreEvidence::logOdds(0.55) - 1));
+  for (int i = 0; i < 6; ++i) bush.add(true, 0.3);
+  CHECK(bush.refuted());  // 3 + 0.20 - 1 - 6 x 0.85 <= -2.5
+}
+
 TEST_CASE("GNN takes the cheapest gated pairs", "[track]") {
   const double c[2][3] = {{1, 5, 9}, {2, 9, 9}};
   const auto a = gnnAssociate(

@@ -1,5 +1,6 @@
 #include "pedtrack/track/management.h"
 
+#include <algorithm>
 #include <bitset>
 #include <cmath>
 #include <stdexcept>
@@ -55,6 +56,19 @@ TrackStatus ExistenceLlr::step(TrackStatus current, double p_exist) const {
   if (l <= delete_) return TrackStatus::Deleted;
   if (l >= confirm_) return TrackStatus::Confirmed;
   return current;  // continue the test; a confirmed track stays confirmed
+}
+
+}  // namespace pedtrack::track
+
+namespace pedtrack::track {
+
+double ScoreEvidence::logOdds(double q) {
+  const double p = std::clamp(q, 1e-6, 1 - 1e-6);
+  return std::clamp(std::log(p / (1 - p)), -3.0, 3.0);
+}
+
+void ScoreEvidence::add(bool associated, double q) {
+  sum_ += associated ? logOdds(q) : miss_;
 }
 
 }  // namespace pedtrack::track

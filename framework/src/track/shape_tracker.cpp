@@ -65,8 +65,9 @@ std::vector<ShapeTracker::Candidate> ShapeTracker::candidates(const Frame& f) co
 
 ShapeTracker::ShapeTrack ShapeTracker::birth(const Candidate& c) {
   ShapeTrack t{ids_.next(), estimators_(c.cloud, c.position, rng_),
-               MOfN(p_.confirm_hits, p_.confirm_window, p_.max_misses)};
-  t.life.step(true);
+               MOfN(p_.confirm_hits, p_.confirm_window, p_.max_misses),
+               ScoreEvidence(p_.confirm_evidence, p_.evidence_miss)};
+  step(t, true, c.score);
   t.score = c.score;
   t.cluster = c.cluster;
   return t;
@@ -89,15 +90,15 @@ void ShapeTracker::process(Frame& f) {
     if (i >= 0) {
       taken[i] = 1;
       t.estimate->update(cands[i].cloud, rng_);
-      t.life.step(true);
       t.misses = 0;
+      step(t, true, cands[i].score);
       t.score = cands[i].score;
       t.cluster = cands[i].cluster;
     } else {
       t.estimate->miss();
       ++t.misses;
       t.cluster = -1;
-      if (t.life.step(false) == TrackStatus::Deleted) continue;
+      if (!step(t, false, 0)) continue;
     }
     kept.push_back(std::move(t));
   }
@@ -109,9 +110,22 @@ void ShapeTracker::process(Frame& f) {
   report(f);
 }
 
+bool ShapeTracker::step(ShapeTrack& t, bool associated, double q) const {
+  const TrackStatus s = t.life.step(associated);
+  if (p_.confirm_evidence <= 0) {
+    t.confirmed = s == TrackStatus::Confirmed;
+    return s != TrackStatus::Deleted;
+  }
+  // Evidence decides confirmation; a confirmed track goes after max_misses misses in a row.
+  if (t.confirmed) return t.misses < std::max(1, p_.max_misses);
+  t.evidence.add(associated, q);
+  if (t.evidence.confirmed()) t.confirmed = true;
+  return !t.evidence.refuted() && t.misses <= p_.confirm_window - p_.confirm_hits;
+}
+
 void ShapeTracker::report(Frame& f) {
   for (ShapeTrack& t : tracks_) {
-    const bool confirmed = t.life.status() == TrackStatus::Confirmed;
+    const bool confirmed = t.confirmed;
     if (!confirmed && !p_.report_tentative) continue;
     Track row = t.estimate->row();
     row.id = t.id;

@@ -33,6 +33,13 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
                    "N of M-of-N: a new track's first scans that must hold M associations")
           .integer(&P::max_misses, "max_misses", "", 0, 10000,
                    "the scan that makes this many misses in a row deletes a confirmed track")
+          .real(&P::confirm_evidence, "confirm_evidence", "", 0, 100,
+                "> 0: confirm a track by accumulated classifier evidence instead of M-of-N: the "
+                "sum over its scans of logit(score) (within +-3) and evidence_miss per missed "
+                "scan must reach this; at -confirm_evidence / 2, or after confirm_window - "
+                "confirm_hits + 1 misses in a row, a tentative track is deleted; 0: M-of-N (P1)")
+          .real(&P::evidence_miss, "evidence_miss", "", -100, 0,
+                "log-odds a missed scan adds to a tentative track's evidence")
           .vector(&P::q_rates, "q", "unit^2/s", 6, 0, 1e6,
                   "process noise rates of [x, y, theta, v, alpha, beta] (P1 Table I per 0.1 s "
                   "frame x 10)")

@@ -13,8 +13,8 @@
 namespace pedtrack::classify {
 
 struct ForestTraining {
-  int trees = 200;         ///< forest size
-  int max_depth = 16;      ///< deepest split
+  int trees = 100;         ///< forest size
+  int max_depth = 10;      ///< deepest split
   int min_samples = 5;     ///< a node with fewer samples is a leaf
   unsigned long seed = 1;  ///< OpenCV's RNG (bootstrap samples, feature draws)
 };

@@ -34,6 +34,26 @@ struct ScoreHysteresis {
   }
 };
 
+/// Confirmation by person evidence accumulated over scans (ours, #45): each scan a tentative track
+/// is associated adds its detection's classifier score as log-odds, logit(q) held within ±3 (a
+/// score of 0.5 says nothing; 0.95 adds 2.9, 0.3 takes 0.85 off), each scan it is missed adds
+/// `miss`. Confirmed once the sum reaches `confirm`; a tentative track whose sum falls to
+/// −confirm / 2 is deleted. One frame's high score on furniture is not enough, a person's steady
+/// scores are, and however a classifier is calibrated its 0.5 stays the neutral point.
+class ScoreEvidence {
+ public:
+  ScoreEvidence(double confirm, double miss) : confirm_(confirm), miss_(miss) {}
+  /// The scan's outcome: associated with a detection scoring q, or missed.
+  void add(bool associated, double q);
+  bool confirmed() const { return sum_ >= confirm_; }
+  bool refuted() const { return sum_ <= -0.5 * confirm_; }
+  double sum() const { return sum_; }
+  static double logOdds(double q);  ///< logit(q) within ±3
+
+ private:
+  double confirm_, miss_, sum_ = 0;
+};
+
 /// Sequential probability ratio test on the existence probability (P4 eq. 3): LLR = ln(P_T /
 /// (1 − P_T)); confirm at LLR ≥ ln((1 − β_T)/α_T), delete at LLR ≤ ln(β_T / (1 − α_T)), where
 /// α_T is the probability of confirming a false track and β_T of deleting a true one.

@@ -29,6 +29,11 @@ struct ShapeTrackerParams {
   double q_person = 0.5, q_min = 0.2;  ///< score to start a track / to feed one
   double gate = 1.0;                   ///< largest track–cluster distance (m)
   int confirm_hits = 3, confirm_window = 5, max_misses = 10;
+  /// > 0: a track is confirmed by accumulated classifier evidence (ScoreEvidence) instead of
+  /// M-of-N: log-odds to confirm; a tentative track is deleted when its evidence falls to half
+  /// of it below zero or after confirm_window - confirm_hits + 1 misses in a row.
+  double confirm_evidence = 0;
+  double evidence_miss = -1;  ///< log-odds a missed scan adds to a tentative track's evidence
   double fit_min_height = 0.6, fit_max_height = 2.2;  ///< points the shapes are fitted to (m)
   /// The PC-COG model's fixed alpha (P1); its beta is observation.cog_beta.
   double cog_alpha = 0.17;
@@ -69,6 +74,8 @@ class ShapeTracker {
     long id = 0;
     std::unique_ptr<TorsoEstimator> estimate;
     MOfN life;
+    ScoreEvidence evidence;
+    bool confirmed = false;  // latched
     int misses = 0;
     double score = 0;
     int cluster = -1;
@@ -76,6 +83,9 @@ class ShapeTracker {
 
   std::vector<Candidate> candidates(const Frame& f) const;
   ShapeTrack birth(const Candidate& c);
+  // One scan of a track's management (associated with a detection scoring q, or missed): its
+  // status by M-of-N or by evidence (confirm_evidence); false when it is deleted.
+  bool step(ShapeTrack& t, bool associated, double q) const;
   void report(Frame& f);
 
   ShapeTrackerParams p_;
