@@ -20,7 +20,6 @@
 namespace pedtrack::cli {
 namespace {
 
-namespace fs = std::filesystem;
 using eval::KittiFrameMatch;
 
 struct KittiArgs {

@@ -71,20 +71,17 @@ TEST_CASE("a parked car shows its side at sill height and its wheels below", "[s
 
 TEST_CASE("a facade's doorways are recesses, its wall above them", "[sim][scene]") {
   const std::string facade = "[object.f]\ntype = facade\nx = 5\ny = -20\nx2 = 5\ny2 = 20\n";
-  const auto at_legs = rangesOf(scan2D(facade, 1.0), -1, 1.3);
-  const auto above = rangesOf(scan2D(facade, 3.0), -1, 1.3);
+  const auto scan = scan2D(facade, 1.0), high = scan2D(facade, 3.0);
+  const auto at_legs = rangesOf(scan, -1, 1.3);
+  const auto above = rangesOf(high, -1, 1.3);
   REQUIRE(at_legs.size() > 500);
   // Above the doors every beam meets the face (x = 5 - 0.15); at 1 m some go 0.3-0.8 m deeper.
-  double deep = 0;
-  for (std::size_t i = 0; i < at_legs.size(); ++i) deep = std::max(deep, at_legs[i]);
   std::size_t recessed = 0;
-  const auto scan = scan2D(facade, 1.0);
   for (std::size_t i = 0; i < scan.range.size(); ++i)
     if (scan.owner[i] == -1 && std::abs(scan.bearing[i]) < 1.3)
       recessed += scan.range[i] * std::cos(scan.bearing[i]) > 4.85 + 0.25;
   CHECK(recessed > 10);
   std::size_t recessed_above = 0;
-  const auto high = scan2D(facade, 3.0);
   for (std::size_t i = 0; i < high.range.size(); ++i)
     if (high.owner[i] == -1 && std::abs(high.bearing[i]) < 1.3)
       recessed_above += high.range[i] * std::cos(high.bearing[i]) > 4.85 + 0.25;

@@ -38,18 +38,20 @@ ForestClassifier::ForestClassifier(cv::Ptr<cv::ml::RTrees> forest,
 }
 
 void ForestClassifier::probability(const double* x, std::size_t n, std::vector<double>& out) const {
-  out.resize(n);
+  out.assign(n, 0.0);
+  if (n == 0) return;
   const int d = int(dims());
-  row_.create(1, d, CV_32F);
+  row_.create(int(n), d, CV_32F);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int j = 0; j < d; ++j) row_.at<float>(int(i), j) = float(x[i * d + j]);
+  // One call for every row: a header row of the class labels, then per sample its votes.
+  forest_->getVotes(row_, votes_, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    for (int j = 0; j < d; ++j) row_.at<float>(0, j) = float(x[i * d + j]);
-    // getVotes: a header row of the class labels, then per sample the votes for each.
-    forest_->getVotes(row_, votes_, 0);
     double person = 0, total = 0;
     for (int c = 0; c < votes_.cols; ++c) {
-      const int label = votes_.at<int>(0, c), v = votes_.at<int>(1, c);
+      const int v = votes_.at<int>(int(i) + 1, c);
       total += v;
-      if (label == int(Label::Person)) person += v;
+      if (votes_.at<int>(0, c) == int(Label::Person)) person += v;
     }
     out[i] = total > 0 ? person / total : 0;
   }

@@ -125,41 +125,47 @@ bool KittiObject::contains(double px, double py, double margin) const {
   return std::abs(along) <= l / 2 + margin && std::abs(across) <= w / 2 + margin;
 }
 
-std::vector<KittiObject> readKittiObjectLabels(const std::string& path, const KittiCalib& calib,
-                                               long frame) {
+namespace {
+
+// Every non-empty line of a label file, split into its values, with "FILE: line N" for errors.
+template <class Fn>
+std::vector<KittiObject> readLabelLines(const std::string& path, Fn&& object) {
   std::ifstream f(path);
   if (!f) throw DataError(path + ": cannot open");
   std::vector<KittiObject> out;
   std::string line;
   for (int n = 1; std::getline(f, line); ++n) {
     const auto fields = split(line);
-    if (fields.empty()) continue;
-    KittiObject o = fromFields(fields, 0, calib, path + ": line " + std::to_string(n));
-    o.frame = frame;
-    out.push_back(std::move(o));
+    if (!fields.empty()) out.push_back(object(fields, path + ": line " + std::to_string(n)));
   }
   return out;
 }
 
+}  // namespace
+
+std::vector<KittiObject> readKittiObjectLabels(const std::string& path, const KittiCalib& calib,
+                                               long frame) {
+  return readLabelLines(path,
+                        [&](const std::vector<std::string>& fields, const std::string& where) {
+                          KittiObject o = fromFields(fields, 0, calib, where);
+                          o.frame = frame;
+                          return o;
+                        });
+}
+
 std::vector<KittiObject> readKittiTrackingLabels(const std::string& path, const KittiCalib& calib) {
-  std::ifstream f(path);
-  if (!f) throw DataError(path + ": cannot open");
-  std::vector<KittiObject> out;
-  std::string line;
-  for (int n = 1; std::getline(f, line); ++n) {
-    const auto fields = split(line);
-    if (fields.empty()) continue;
-    const std::string where = path + ": line " + std::to_string(n);
-    if (fields.size() < 2) throw DataError(where + ": expected frame track_id type ...");
-    KittiObject o = fromFields(fields, 2, calib, where);
-    char* end = nullptr;
-    o.frame = std::strtol(fields[0].c_str(), &end, 10);
-    if (*end || o.frame < 0) throw DataError(where + ": frame '" + fields[0] + "' is not a frame");
-    o.track = std::strtol(fields[1].c_str(), &end, 10);
-    if (*end) throw DataError(where + ": track id '" + fields[1] + "' is not a number");
-    out.push_back(std::move(o));
-  }
-  return out;
+  return readLabelLines(
+      path, [&](const std::vector<std::string>& fields, const std::string& where) {
+        if (fields.size() < 2) throw DataError(where + ": expected frame track_id type ...");
+        KittiObject o = fromFields(fields, 2, calib, where);
+        char* end = nullptr;
+        o.frame = std::strtol(fields[0].c_str(), &end, 10);
+        if (*end || o.frame < 0)
+          throw DataError(where + ": frame '" + fields[0] + "' is not a frame");
+        o.track = std::strtol(fields[1].c_str(), &end, 10);
+        if (*end) throw DataError(where + ": track id '" + fields[1] + "' is not a number");
+        return o;
+      });
 }
 
 std::map<long, KittiScanLabels> readKittiObjectDir(const std::string& dir) {
