@@ -217,3 +217,44 @@ TEST_CASE("shape tracker: low scores start nothing; a lost track is deleted afte
   }
   CHECK(counts == std::vector<std::size_t>{1, 1, 0, 0, 0, 0});  // the 3rd miss in a row deletes
 }
+
+TEST_CASE("shape tracker static scene: a post learned starts no track; a tracked person stays",
+          "[shape][tracker][static]") {
+  // A post (0.1 m round) scoring 0.3 for 4 s, then 0.9: P1's tracker (static_scene off) starts
+  // and confirms a track on it once it scores high; with the grid, its cells have been occupied
+  // for longer than static_persist (3 s) away from any track, and nothing starts.
+  auto run = [](bool static_scene) {
+    ShapeTrackerParams p;
+    p.static_scene = static_scene;
+    ShapeTracker tracker(p);
+    std::mt19937 gen(4);
+    std::size_t reported = 0;
+    for (int k = 0; k < 60; ++k) {
+      Frame f = torsoFrame(0.1 * k, torso(5, 0, M_PI, 0.1, 0.1, 10, 6, gen), k < 40 ? 0.3 : 0.9);
+      tracker.process(f);
+      reported = std::max(reported, f.tracks.size());
+    }
+    return reported;
+  };
+  CHECK(run(false) == 1);
+  CHECK(run(true) == 0);
+
+  // A person standing still from the start is tracked at once: the track holds their place,
+  // so 10 s of standing never makes them static scene.
+  ShapeTrackerParams p;
+  p.static_scene = true;
+  ShapeTracker tracker(p);
+  std::mt19937 gen(5);
+  std::vector<std::size_t> counts;
+  for (int k = 0; k < 100; ++k) {
+    Frame f = torsoFrame(0.1 * k, torso(4, 1, M_PI, 0.18, 0.09, 20, 3, gen));
+    tracker.process(f);
+    if (k % 20 == 19) counts.push_back(f.tracks.size());
+  }
+  CHECK(counts == std::vector<std::size_t>{1, 1, 1, 1, 1});
+  // The fixed frame jumps (motion unknown): the grid forgets, and the person stays tracked.
+  Frame f = torsoFrame(10.0, torso(4, 1, M_PI, 0.18, 0.09, 20, 3, gen));
+  f.motion_unknown = true;
+  tracker.process(f);
+  CHECK(f.tracks.size() == 1);
+}

@@ -14,7 +14,7 @@
 #include <fstream>
 #include <limits>
 
-#include "leg_people/static_scene.h"
+#include "pedtrack/track/static_scene.h"
 #include "pedtrack/errors.h"
 #include "ray_world.h"
 #include "test_support.h"

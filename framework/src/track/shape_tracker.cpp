@@ -25,6 +25,7 @@ ShapeTracker::ShapeTracker(ShapeTrackerParams params, TorsoEstimatorFactory esti
     : p_(std::move(params)), estimators_(std::move(estimators)), rng_(p_.seed) {
   accept_.q_person = p_.q_person;
   accept_.q_min = p_.q_min;
+  if (p_.static_scene) scene_.emplace(p_.scene);
 }
 
 std::vector<ShapeTracker::Candidate> ShapeTracker::candidates(const Frame& f) const {
@@ -75,6 +76,8 @@ ShapeTracker::ShapeTrack ShapeTracker::birth(const Candidate& c) {
 
 void ShapeTracker::process(Frame& f) {
   const double dt = clock_.step(f.t);
+  // The fixed frame jumped by an unknown amount: what the grid learned may lie anywhere.
+  if (scene_ && f.motion_unknown) scene_->forget();
   for (ShapeTrack& t : tracks_) t.estimate->predict(dt);
   const std::vector<Candidate> cands = candidates(f);
   std::vector<Eigen::Vector2d> predicted;
@@ -105,9 +108,36 @@ void ShapeTracker::process(Frame& f) {
   tracks_ = std::move(kept);
   for (std::size_t i = 0; i < cands.size(); ++i)
     if (!taken[i] && cands[i].score >= p_.q_person &&
-        int(cands[i].cloud.points.size()) >= p_.birth_points)
+        int(cands[i].cloud.points.size()) >= p_.birth_points && !onStaticScene(cands[i], f.t))
       tracks_.push_back(birth(cands[i]));
+  if (scene_ && !f.motion_unknown) learnStaticScene(f);
   report(f);
+}
+
+bool ShapeTracker::onStaticScene(const Candidate& c, double t) const {
+  if (!scene_ || c.cloud.points.empty()) return false;
+  std::size_t on = 0;
+  for (const Eigen::Vector2d& q : c.cloud.points) on += scene_->isStatic(q.x(), q.y(), t);
+  return double(on) >= p_.static_share * double(c.cloud.points.size());
+}
+
+void ShapeTracker::learnStaticScene(const Frame& f) {
+  // Every clustered return (ground and what is above a head already removed), fixed frame.
+  const auto& cloud = f.cloud();
+  const auto& xs = cloud.getPointsBufferRef_x();
+  const auto& ys = cloud.getPointsBufferRef_y();
+  const double c = std::cos(f.robot_pose.yaw()), s = std::sin(f.robot_pose.yaw());
+  const double rx = f.robot_pose.x(), ry = f.robot_pose.y();
+  obstacles_.clear();
+  for (const Cluster& cl : f.clusters)
+    for (std::uint32_t k : cl.indices)
+      if (k < xs.size())
+        obstacles_.emplace_back(rx + c * xs[k] - s * ys[k], ry + s * xs[k] + c * ys[k]);
+  // A person walking with the robot, or standing while tracked, is never learned: their
+  // track (confirmed or not) holds their place.
+  people_.clear();
+  for (const ShapeTrack& t : tracks_) people_.push_back(t.estimate->position());
+  scene_->updatePoints(f.t, {f.sensor_pose.x(), f.sensor_pose.y()}, obstacles_, people_);
 }
 
 bool ShapeTracker::step(ShapeTrack& t, bool associated, double q) const {

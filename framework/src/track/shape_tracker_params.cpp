@@ -58,6 +58,23 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
           .integer(&P::seed, "seed", "", 0, 4294967295.0, "seed of the RANSAC sampling")
           .boolean(&P::report_tentative, "report_tentative",
                    "also write tracks not yet confirmed to tracks.csv (status tentative)")
+          .boolean(&P::static_scene, "static_scene",
+                   "ours: a grid of the fixed frame learns where returns stay put for "
+                   "static_persist seconds, not near any track; a cluster with static_share of "
+                   "its fit-band points on it starts no track (P1: off)")
+          .real(&P::static_share, "static_share", "", 0.01, 1,
+                "share of a cluster's fit-band points on static cells that keeps it from "
+                "starting a track")
+          .real(path(&P::scene, &StaticScene::Options::persist), "static_persist", "s", 0, 3600,
+                "a cell occupied this long (not near a track) is static scene: longer than a "
+                "walker's stance, shorter than a moving robot sees a parked car")
+          .real(path(&P::scene, &StaticScene::Options::cell), "static_cell", "m", 0.01, 1,
+                "cell size of the static-scene grid")
+          .real(path(&P::scene, &StaticScene::Options::max_range), "static_range", "m", 1, 100,
+                "returns farther than this from the sensor are not learned")
+          .text(path(&P::scene, &StaticScene::Options::prior_map), "prior_map",
+                "optional map of the fixed frame: ROS map.yaml or MRPT .gridmap; its "
+                "occupied cells are static scene")
           .check(&P::q_min, [](const P& p) { return notAbove(p.q_min, p.q_person, "q_person"); })
           .check(&P::confirm_hits,
                  [](const P& p) {

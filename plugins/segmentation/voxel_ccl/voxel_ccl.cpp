@@ -8,6 +8,7 @@
 #include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/seg/cluster_features.h"
+#include "voxel_ccl/crowd_split.h"
 #include "voxel_ccl/voxel_labelling.h"
 
 namespace pedtrack::voxelccl {
@@ -27,6 +28,12 @@ struct VoxelCclParams {
   double min_height = 0, max_height = 2.2;  // m above the ground (range grid)
   seg::Connectivity connectivity = seg::Connectivity::TwentySix;
   long min_points = 5;
+  bool split = false;  // ours (#45); P2 keeps every component whole
+  double crowd_min_head = CrowdSplitParams{}.min_head;
+  double crowd_head_dip = CrowdSplitParams{}.head_dip;
+  double crowd_min_spacing = CrowdSplitParams{}.min_spacing;
+  double crowd_max_extent = CrowdSplitParams{}.max_extent;
+  double crowd_min_share = CrowdSplitParams{}.min_share;
 };
 
 const ParamTable<VoxelCclParams>& table() {
@@ -51,7 +58,21 @@ const ParamTable<VoxelCclParams>& table() {
                    {"26", seg::Connectivity::TwentySix}},
                   "voxel neighbourhood: faces (6), + edges (18), + corners (26)")
           .integer(&P::min_points, "min_points", "", 1, 1000000,
-                   "components with fewer points are dropped (left unclustered)");
+                   "components with fewer points are dropped (left unclustered)")
+          .boolean(&P::split, "split",
+                   "ours: a component with two or more heads (peaks of its height map "
+                   "split_head_dip apart) is split into one cluster per person")
+          .real(&P::crowd_min_head, "split_min_head", "m", 0, 5,
+                "split: the lowest head above the ground (a child)")
+          .real(&P::crowd_head_dip, "split_head_dip", "m", 0.01, 2,
+                "split: how far the highest returns between two heads lie below the lower head")
+          .real(&P::crowd_min_spacing, "split_min_spacing", "m", 0.05, 5,
+                "split: the closest two heads (people shoulder to shoulder)")
+          .real(&P::crowd_max_extent, "split_max_extent", "m", 0.5, 100,
+                "split: components wider than this are walls or hedges and stay whole")
+          .real(&P::crowd_min_share, "split_min_share", "", 0, 0.5,
+                "split: a head left with a smaller share of the component's points is an arm "
+                "or a bag, not a person");
   return t;
 }
 
@@ -75,7 +96,14 @@ class VoxelCcl : public Segmenter {
         max_h_(p.max_height),
         min_points_(std::size_t(p.min_points)),
         connectivity_(p.connectivity),
-        names_(std::make_shared<const std::vector<std::string>>(featureNames())) {}
+        split_(p.split),
+        names_(std::make_shared<const std::vector<std::string>>(featureNames())) {
+    crowd_.min_head = p.crowd_min_head;
+    crowd_.head_dip = p.crowd_head_dip;
+    crowd_.min_spacing = p.crowd_min_spacing;
+    crowd_.max_extent = p.crowd_max_extent;
+    crowd_.min_share = p.crowd_min_share;
+  }
 
   void process(Frame& f) override {
     const auto& c = f.cloud();
@@ -133,22 +161,28 @@ class VoxelCcl : public Segmenter {
     order_.resize(component_.size());
     fill_ = start_;
     for (std::size_t j = 0; j < component_.size(); ++j) order_[fill_[component_[j]]++] = j;
-    std::vector<Eigen::Vector3d> pts;
     for (int k = 0; k < count; ++k) {
       const std::size_t n = start_[k + 1] - start_[k];
       if (n < min_points_) continue;
-      Cluster cl;
-      cl.indices.reserve(n);
-      pts.clear();
-      for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
-        cl.indices.push_back(index_[order_[m]]);
-        pts.push_back(aligned_[order_[m]]);
+      component_pts_.clear();
+      for (std::size_t m = start_[k]; m < start_[k + 1]; ++m)
+        component_pts_.push_back(aligned_[order_[m]]);
+      const int people = split_ ? splitCrowd(component_pts_, crowd_, part_) : 1;
+      for (int person = 0; person < people; ++person) {
+        Cluster cl;
+        pts_.clear();
+        for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
+          if (people > 1 && part_[m - start_[k]] != person) continue;
+          cl.indices.push_back(index_[order_[m]]);
+          pts_.push_back(aligned_[order_[m]]);
+        }
+        if (pts_.size() < min_points_) continue;  // left unclustered, as a small component
+        seg::setCentroidAndExtent(cl, c);
+        const seg::P2Features ft = seg::p2Features(pts_, s.x(), s.y(), voxel_);
+        cl.features = {ft.h, ft.w, ft.d, ft.v, ft.lambda, ft.rho};
+        seg::appendShapeFeatures(pts_, s.x(), s.y(), cl.features);
+        f.clusters.push_back(std::move(cl));
       }
-      seg::setCentroidAndExtent(cl, c);
-      const seg::P2Features ft = seg::p2Features(pts, s.x(), s.y(), voxel_);
-      cl.features = {ft.h, ft.w, ft.d, ft.v, ft.lambda, ft.rho};
-      seg::appendShapeFeatures(pts, s.x(), s.y(), cl.features);
-      f.clusters.push_back(std::move(cl));
     }
   }
 
@@ -158,6 +192,8 @@ class VoxelCcl : public Segmenter {
   double max_range_, min_h_, max_h_;
   std::size_t min_points_;
   seg::Connectivity connectivity_;
+  bool split_;
+  CrowdSplitParams crowd_;
   std::shared_ptr<const std::vector<std::string>> names_;
   seg::VoxelLabeler labeler_;
   // Per-frame buffers, reused.
@@ -166,6 +202,8 @@ class VoxelCcl : public Segmenter {
   std::vector<Eigen::Vector3d> aligned_;
   std::vector<int> component_;
   std::vector<std::size_t> start_, fill_, order_;
+  std::vector<Eigen::Vector3d> component_pts_, pts_;
+  std::vector<int> part_;
 };
 
 PluginDescriptor describe() {

@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "leg_people/leg_people_tracker.h"
-#include "leg_people/static_scene.h"
+#include "pedtrack/track/static_scene.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/ipopt/gait_fit.h"
 #include "pedtrack/param_table.h"

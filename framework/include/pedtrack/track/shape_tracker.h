@@ -6,6 +6,7 @@
 // (P1) uses three, `kf_bb` and `kf_circle` (P0's baselines) one each), or P0's moving-horizon
 // estimator (`mhe_mlesac`).
 #include <Eigen/Core>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "pedtrack/plugin.h"
 #include "pedtrack/track/management.h"
 #include "pedtrack/track/shape_observation.h"
+#include "pedtrack/track/static_scene.h"
 #include "pedtrack/track/torso_estimator.h"
 #include "pedtrack/track/tracker_base.h"
 
@@ -42,6 +44,18 @@ struct ShapeTrackerParams {
   double flip_speed = 0.2;  ///< walking "backwards" faster than this turns the heading round (m/s)
   unsigned seed = 1;        ///< RANSAC sampling
   bool report_tentative = false;
+  /// Ours (#45): a grid of the fixed frame learns where the clusters' returns stay put (walls,
+  /// posts, parked cars, bushes); a cluster with static_share of its torso points on it starts
+  /// no track. Returns near any track (confirmed or not) are not learned.
+  bool static_scene = false;
+  double static_share = 0.5;
+  StaticScene::Options scene = [] {
+    StaticScene::Options o;
+    o.cell = 0.1;  // a torso is ~0.45 x 0.3 m; 3D returns are sparser than a 2D scan's
+    o.max_range = 20;
+    o.extent = 25;
+    return o;
+  }();
   ShapeTrackerParams();
 };
 
@@ -87,14 +101,19 @@ class ShapeTracker {
   // status by M-of-N or by evidence (confirm_evidence); false when it is deleted.
   bool step(ShapeTrack& t, bool associated, double q) const;
   void report(Frame& f);
+  // Static scene: whether a candidate lies on it, and the frame's returns learned into it.
+  bool onStaticScene(const Candidate& c, double t) const;
+  void learnStaticScene(const Frame& f);
 
   ShapeTrackerParams p_;
+  std::optional<StaticScene> scene_;
   TorsoEstimatorFactory estimators_;
   ScoreHysteresis accept_;
   FrameClock clock_;
   TrackIds ids_;
   std::mt19937 rng_;
   std::vector<ShapeTrack> tracks_;
+  std::vector<Eigen::Vector2d> obstacles_, people_;  ///< scratch for learnStaticScene
 };
 
 /// The tracker stage of a shape-tracker plugin: the common parameters read from `params`, then

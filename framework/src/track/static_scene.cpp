@@ -1,4 +1,4 @@
-#include "leg_people/static_scene.h"
+#include "pedtrack/track/static_scene.h"
 
 #include <mrpt/containers/yaml.h>
 #include <mrpt/io/CFileGZInputStream.h>
