@@ -24,8 +24,8 @@ struct HeightMap {
 
 }  // namespace
 
-int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const CrowdSplitParams& p,
-               std::vector<int>& part) {
+int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const Eigen::Vector3d& sensor,
+               const CrowdSplitParams& p, std::vector<int>& part) {
   part.assign(pts.size(), 0);
   if (pts.empty()) return 1;
   double x0 = pts[0].x(), x1 = x0, y0 = pts[0].y(), y1 = y0;
@@ -47,9 +47,9 @@ int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const CrowdSplitParams& 
 
   // Heads by topographic prominence: the cells are flooded from the highest down, and where
   // the regions of two peaks meet (the pass between them), the lower peak is a head of its own
-  // when it stands head_dip or more above the pass. A shoulder, a raised arm, a pram's handle
-  // or a bag meets its person's head at or near its own height. Cells with no return are
-  // never crossed: people apart are their own heads whatever their height.
+  // when it stands head_dip of its height or more above the pass. A shoulder, a raised arm, a
+  // pram's handle or a bag meets its person's head at or near its own height. Cells with no return
+  // are never crossed: people apart are their own heads whatever their height.
   std::vector<std::size_t> cells;
   for (std::size_t c = 0; c < m.top.size(); ++c)
     if (m.top[c] >= 0) cells.push_back(c);
@@ -81,7 +81,7 @@ int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const CrowdSplitParams& 
         // The region with the lower peak ends here, at the pass m.top[c].
         if (m.top[peak[ra]] > m.top[peak[rb]]) std::swap(ra, rb);
         const double h = m.top[peak[ra]];
-        if (h >= p.min_head && h - m.top[c] >= p.head_dip) heads.push_back(headAt(peak[ra]));
+        if (h >= p.min_head && h - m.top[c] >= p.head_dip * h) heads.push_back(headAt(peak[ra]));
         root[ra] = long(rb);
       }
   }
@@ -93,9 +93,19 @@ int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const CrowdSplitParams& 
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     int n = 0;
     for (const auto& q : pts)
-      if (q.z() >= h.h - p.head_dip && std::hypot(q.x() - h.x, q.y() - h.y) < 0.15)
+      if (q.z() >= (1 - p.head_dip) * h.h && std::hypot(q.x() - h.x, q.y() - h.y) < 0.15)
         sum += q.head<2>(), ++n;
     h.x = sum.x() / n, h.y = sum.y() / n;  // n >= 1: the top return itself
+  }
+  // Peaks the sensor's top beam cut are not heads.
+  if (p.top_elevation > 0) {
+    const double limit = (p.top_elevation - 0.5) * M_PI / 180;
+    heads.erase(std::remove_if(heads.begin(), heads.end(),
+                               [&](const Peak& h) {
+                                 const double r = std::hypot(h.x - sensor.x(), h.y - sensor.y());
+                                 return std::atan2(h.h - sensor.z(), r) >= limit;
+                               }),
+                heads.end());
   }
   // Two heads closer than min_spacing are one person's: the higher stays.
   std::sort(heads.begin(), heads.end(), [](const Peak& a, const Peak& b) { return a.h > b.h; });

@@ -34,6 +34,7 @@ struct VoxelCclParams {
   double crowd_min_spacing = CrowdSplitParams{}.min_spacing;
   double crowd_max_extent = CrowdSplitParams{}.max_extent;
   double crowd_min_share = CrowdSplitParams{}.min_share;
+  double crowd_top_elevation = CrowdSplitParams{}.top_elevation;
 };
 
 const ParamTable<VoxelCclParams>& table() {
@@ -64,15 +65,19 @@ const ParamTable<VoxelCclParams>& table() {
                    "split_head_dip apart) is split into one cluster per person")
           .real(&P::crowd_min_head, "split_min_head", "m", 0, 5,
                 "split: the lowest head above the ground (a child)")
-          .real(&P::crowd_head_dip, "split_head_dip", "m", 0.01, 2,
-                "split: how far the highest returns between two heads lie below the lower head")
+          .real(&P::crowd_head_dip, "split_head_dip", "", 0.01, 1,
+                "split: how far the highest returns between two heads lie below the lower "
+                "head, as a share of its height (head and neck: 0.25 m of an adult 1.75 m tall)")
           .real(&P::crowd_min_spacing, "split_min_spacing", "m", 0.05, 5,
                 "split: the closest two heads (people shoulder to shoulder)")
           .real(&P::crowd_max_extent, "split_max_extent", "m", 0.5, 100,
                 "split: components wider than this are walls or hedges and stay whole")
           .real(&P::crowd_min_share, "split_min_share", "", 0, 0.5,
                 "split: a head left with a smaller share of the component's points is an arm "
-                "or a bag, not a person");
+                "or a bag, not a person")
+          .real(&P::crowd_top_elevation, "split_top_elevation", "deg", 0, 90,
+                "split: the sensor's highest beam above its horizon (VLP-16: 15, HDL-64: 2; "
+                "0: no limit): a peak within 0.5 deg of it is where the view ends, not a head");
   return t;
 }
 
@@ -103,6 +108,7 @@ class VoxelCcl : public Segmenter {
     crowd_.min_spacing = p.crowd_min_spacing;
     crowd_.max_extent = p.crowd_max_extent;
     crowd_.min_share = p.crowd_min_share;
+    crowd_.top_elevation = p.crowd_top_elevation;
   }
 
   void process(Frame& f) override {
@@ -167,7 +173,7 @@ class VoxelCcl : public Segmenter {
       component_pts_.clear();
       for (std::size_t m = start_[k]; m < start_[k + 1]; ++m)
         component_pts_.push_back(aligned_[order_[m]]);
-      const int people = split_ ? splitCrowd(component_pts_, crowd_, part_) : 1;
+      const int people = split_ ? splitCrowd(component_pts_, s, crowd_, part_) : 1;
       for (int person = 0; person < people; ++person) {
         Cluster cl;
         pts_.clear();
