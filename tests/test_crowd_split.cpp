@@ -3,6 +3,7 @@
 // a flat-topped wall, a bush cut by the sensor's top beam, and heads closer than a shoulder.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "voxel_ccl/crowd_split.h"
@@ -81,11 +82,18 @@ TEST_CASE("one person with a raised arm, a pram or a bag stays one", "[crowd_spl
     for (double y = -0.2; y <= 0.2; y += 0.05) p.emplace_back(x, y, 1.0);
   CHECK(splitCrowd(p, kSensor, CrowdSplitParams{}, part) == 2);
   CHECK(partsOf(part, 0, person).size() == 1);
-  // A raised arm standing clear of the shoulder by more than head_dip, but near the head: one.
+  // A raised hand at 1.70 m, 0.3 m above the shoulder (more than head_dip of its height), is
+  // a peak of its own. The component is narrower than min_extent, so it is one person anyway;
+  // with that rule loosened, the hand is nearer the head than min_spacing.
   Points q;
   addPerson(q, 5, 0, 1.75);
-  for (double z = 1.3; z <= 1.62; z += 0.04) q.emplace_back(4.95, 0.32, z);
+  for (double z = 1.3; z <= 1.705; z += 0.05) q.emplace_back(4.95, 0.32, z);
   CHECK(splitCrowd(q, kSensor, CrowdSplitParams{}, part) == 1);
+  CrowdSplitParams loose;
+  loose.min_extent = 0.3;
+  CHECK(splitCrowd(q, kSensor, loose, part) == 1);
+  loose.min_spacing = 0.2;  // control: without the spacing rule the hand is a person
+  CHECK(splitCrowd(q, kSensor, loose, part) == 2);
 }
 
 TEST_CASE("a flat-topped wall and a hedge too wide stay whole", "[crowd_split]") {
@@ -108,11 +116,12 @@ TEST_CASE("a flat-topped wall and a hedge too wide stay whole", "[crowd_split]")
 TEST_CASE("heads closer than min_spacing are one person's", "[crowd_split]") {
   Points p;
   addPerson(p, 5, 0, 1.75);
-  addPerson(p, 5, 0.46, 1.70);
+  addPerson(p, 5, 0.5, 1.70);
   std::vector<int> part;
   CrowdSplitParams close;
   close.min_spacing = 0.6;
   CHECK(splitCrowd(p, kSensor, close, part) == 1);
+  CHECK(splitCrowd(p, kSensor, CrowdSplitParams{}, part) == 2);  // 0.5 m apart: two
   CHECK(splitCrowd({}, kSensor, CrowdSplitParams{}, part) == 1);
   CHECK(part.empty());
 }
@@ -137,4 +146,14 @@ TEST_CASE("peaks the sensor's top beam cut are no heads", "[crowd_split]") {
   addPerson(far, 6, -0.25, 1.75);
   addPerson(far, 6, 0.25, 1.7);
   CHECK(splitCrowd(far, kSensor, vlp16, part) == 2);
+}
+
+TEST_CASE("non-finite points leave a component whole", "[crowd_split]") {
+  Points p;
+  addPerson(p, 5, 0, 1.75);
+  addPerson(p, 5, 0.5, 1.70);
+  p[7].x() = std::numeric_limits<double>::quiet_NaN();
+  std::vector<int> part;
+  CHECK(splitCrowd(p, kSensor, CrowdSplitParams{}, part) == 1);
+  CHECK(partsOf(part, 0, p.size()) == std::set<int>{0});
 }

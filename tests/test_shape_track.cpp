@@ -220,7 +220,7 @@ TEST_CASE("shape tracker: low scores start nothing; a lost track is deleted afte
 
 TEST_CASE("shape tracker static scene: a post learned starts no track; a tracked person stays",
           "[shape][tracker][static]") {
-  // A post (0.1 m round) scoring 0.3 for 4 s, then 0.9: P1's tracker (static_scene off) starts
+  // A post (0.2 m across) scoring 0.3 for 4 s, then 0.9: P1's tracker (static_scene off) starts
   // and confirms a track on it once it scores high; with the grid, its cells have been occupied
   // for longer than static_persist (3 s) away from any track, and nothing starts.
   auto run = [](bool static_scene) {
@@ -240,21 +240,54 @@ TEST_CASE("shape tracker static scene: a post learned starts no track; a tracked
   CHECK(run(true) == 0);
 
   // A person standing still from the start is tracked at once: the track holds their place,
-  // so 10 s of standing never makes them static scene.
+  // so 10 s of standing never makes them static scene. Lost for longer than max_misses (track
+  // deleted) and back, they start a new track; with no exclusion round tracks (control) their
+  // place was learned and nothing starts.
+  auto standing = [](double exclusion) {
+    ShapeTrackerParams p;
+    p.static_scene = true;
+    p.scene.exclusion_radius = exclusion;
+    ShapeTracker tracker(p);
+    std::mt19937 gen(5);
+    std::vector<std::size_t> counts;
+    for (int k = 0; k < 100; ++k) {
+      Frame f = torsoFrame(0.1 * k, torso(4, 1, M_PI, 0.18, 0.09, 20, 3, gen));
+      tracker.process(f);
+      if (k % 20 == 19) counts.push_back(f.tracks.size());
+    }
+    for (int k = 100; k < 115; ++k) {  // not seen: deleted after max_misses (10)
+      Frame f;
+      f.t = 0.1 * k;
+      tracker.process(f);
+    }
+    std::size_t back = 0;
+    for (int k = 115; k < 125; ++k) {
+      Frame f = torsoFrame(0.1 * k, torso(4, 1, M_PI, 0.18, 0.09, 20, 3, gen));
+      tracker.process(f);
+      back = f.tracks.size();
+    }
+    counts.push_back(back);
+    return counts;
+  };
+  CHECK(standing(0.4) == std::vector<std::size_t>{1, 1, 1, 1, 1, 1});
+  CHECK(standing(0).back() == 0);
+
+  // The fixed frame jumps (motion unknown): the grid forgets, and a place learned starts tracks
+  // again.
   ShapeTrackerParams p;
   p.static_scene = true;
   ShapeTracker tracker(p);
-  std::mt19937 gen(5);
-  std::vector<std::size_t> counts;
-  for (int k = 0; k < 100; ++k) {
-    Frame f = torsoFrame(0.1 * k, torso(4, 1, M_PI, 0.18, 0.09, 20, 3, gen));
+  std::mt19937 gen(6);
+  for (int k = 0; k < 40; ++k) {
+    Frame f = torsoFrame(0.1 * k, torso(5, 0, M_PI, 0.1, 0.1, 10, 6, gen), 0.3);
     tracker.process(f);
-    if (k % 20 == 19) counts.push_back(f.tracks.size());
   }
-  CHECK(counts == std::vector<std::size_t>{1, 1, 1, 1, 1});
-  // The fixed frame jumps (motion unknown): the grid forgets, and the person stays tracked.
-  Frame f = torsoFrame(10.0, torso(4, 1, M_PI, 0.18, 0.09, 20, 3, gen));
-  f.motion_unknown = true;
-  tracker.process(f);
-  CHECK(f.tracks.size() == 1);
+  std::size_t after = 0;
+  for (int k = 40; k < 50; ++k) {
+    Frame f = torsoFrame(0.1 * k, torso(5, 0, M_PI, 0.1, 0.1, 10, 6, gen), 0.9);
+    f.motion_unknown = k == 40;
+    tracker.process(f);
+    after = f.tracks.size();
+  }
+  CHECK(after == 1);
 }

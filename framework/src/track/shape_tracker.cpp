@@ -25,7 +25,11 @@ ShapeTracker::ShapeTracker(ShapeTrackerParams params, TorsoEstimatorFactory esti
     : p_(std::move(params)), estimators_(std::move(estimators)), rng_(p_.seed) {
   accept_.q_person = p_.q_person;
   accept_.q_min = p_.q_min;
-  if (p_.static_scene) scene_.emplace(p_.scene);
+  if (p_.static_scene) {
+    StaticScene::Options o = p_.scene;
+    o.extent = std::max(o.extent, o.max_range + 5);  // the grid holds every return learned
+    scene_.emplace(o);
+  }
 }
 
 std::vector<ShapeTracker::Candidate> ShapeTracker::candidates(const Frame& f) const {

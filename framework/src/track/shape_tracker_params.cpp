@@ -68,10 +68,11 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
           .real(path(&P::scene, &StaticScene::Options::persist), "static_persist", "s", 0, 3600,
                 "a cell occupied this long (not near a track) is static scene: longer than a "
                 "walker's stance, shorter than a moving robot sees a parked car")
-          .real(path(&P::scene, &StaticScene::Options::cell), "static_cell", "m", 0.01, 1,
-                "cell size of the static-scene grid")
+          .real(path(&P::scene, &StaticScene::Options::cell), "static_cell", "m", 0.05, 1,
+                "cell size of the static-scene grid (a square of side 2 x max(25, "
+                "static_range + 5) m round the robot)")
           .real(path(&P::scene, &StaticScene::Options::max_range), "static_range", "m", 1, 100,
-                "returns farther than this from the sensor are not learned")
+                "returns farther than this from the sensor are not learned (nor cleared past)")
           .text(path(&P::scene, &StaticScene::Options::prior_map), "prior_map",
                 "optional map of the fixed frame: ROS map.yaml or MRPT .gridmap; its "
                 "occupied cells are static scene")

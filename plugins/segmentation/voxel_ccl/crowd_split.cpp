@@ -8,7 +8,6 @@ namespace {
 
 struct Peak {
   double x, y, h;
-  std::size_t cell;
 };
 
 // The component's highest return per cell of a horizontal grid (-1: no return).
@@ -19,7 +18,6 @@ struct HeightMap {
 
   int ix(double x) const { return std::clamp(int((x - x0) / cell), 0, nx - 1); }
   int iy(double y) const { return std::clamp(int((y - y0) / cell), 0, ny - 1); }
-  double at(int i, int j) const { return top[std::size_t(j) * nx + i]; }
 };
 
 }  // namespace
@@ -30,11 +28,15 @@ int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const Eigen::Vector3d& s
   if (pts.empty()) return 1;
   double x0 = pts[0].x(), x1 = x0, y0 = pts[0].y(), y1 = y0;
   for (const auto& q : pts) {
+    if (!q.allFinite()) return 1;  // voxel_ccl passes none; a direct caller may
     x0 = std::min(x0, q.x()), x1 = std::max(x1, q.x());
     y0 = std::min(y0, q.y()), y1 = std::max(y1, q.y());
   }
+  // The bounding box's diagonal; the map is capped at 2000 cells a side whatever the options.
   const double extent = std::hypot(x1 - x0, y1 - y0);
-  if (!(extent >= p.min_extent && extent <= p.max_extent)) return 1;
+  if (!(extent >= p.min_extent && extent <= p.max_extent) || !(p.cell > 0) ||
+      extent / p.cell > 2000)
+    return 1;
 
   HeightMap m{x0, y0, p.cell, int((x1 - x0) / p.cell) + 1, int((y1 - y0) / p.cell) + 1, {}};
   m.top.assign(std::size_t(m.nx) * m.ny, -1.0);
@@ -64,7 +66,7 @@ int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const Eigen::Vector3d& s
   std::vector<Peak> heads;
   auto headAt = [&](std::size_t c) {
     const auto& q = pts[top_point[c]];
-    return Peak{q.x(), q.y(), m.top[c], c};
+    return Peak{q.x(), q.y(), m.top[c]};
   };
   for (std::size_t c : cells) {
     root[c] = long(c);
@@ -81,12 +83,14 @@ int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const Eigen::Vector3d& s
         // The region with the lower peak ends here, at the pass m.top[c].
         if (m.top[peak[ra]] > m.top[peak[rb]]) std::swap(ra, rb);
         const double h = m.top[peak[ra]];
-        if (h >= p.min_head && h - m.top[c] >= p.head_dip * h) heads.push_back(headAt(peak[ra]));
+        if (h >= p.min_head && h > 0 && h - m.top[c] >= p.head_dip * h)
+          heads.push_back(headAt(peak[ra]));
         root[ra] = long(rb);
       }
   }
   for (std::size_t c : cells)  // the highest peak of every region left
-    if (find(c) == c && m.top[peak[c]] >= p.min_head) heads.push_back(headAt(peak[c]));
+    if (find(c) == c && m.top[peak[c]] >= p.min_head && m.top[peak[c]] > 0)
+      heads.push_back(headAt(peak[c]));
   // A head is where the returns near its top are (the top return itself lies anywhere on the
   // crown's ring), so that spacing and the torso centres start from the head's centre.
   for (Peak& h : heads) {

@@ -9,8 +9,9 @@
 namespace pedtrack::voxelccl {
 
 struct CrowdSplitParams {
-  double min_extent = 0.7;    ///< m: components narrower than this (horizontally) are one person
-  double max_extent = 5.0;    ///< m: wider ones are walls or hedges, left whole
+  /// m: components whose bounding box (horizontal) has a shorter diagonal are one person
+  double min_extent = 0.7;
+  double max_extent = 5.0;    ///< m: a longer diagonal is a wall or a hedge, left whole
   double cell = 0.10;         ///< m: side of the height map's cells
   double min_head = 1.0;      ///< m above the ground: lowest head (a child)
   double head_dip = 0.14;     ///< share of the lower head's height that the highest returns

@@ -71,7 +71,8 @@ const ParamTable<VoxelCclParams>& table() {
           .real(&P::crowd_min_spacing, "split_min_spacing", "m", 0.05, 5,
                 "split: the closest two heads (people shoulder to shoulder)")
           .real(&P::crowd_max_extent, "split_max_extent", "m", 0.5, 100,
-                "split: components wider than this are walls or hedges and stay whole")
+                "split: components whose horizontal bounding box has a longer diagonal are walls "
+                "or hedges and stay whole")
           .real(&P::crowd_min_share, "split_min_share", "", 0, 0.5,
                 "split: a head left with a smaller share of the component's points is an arm "
                 "or a bag, not a person")
