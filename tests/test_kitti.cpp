@@ -197,14 +197,17 @@ TEST_CASE("the HDL-64 pipeline runs on the shared KITTI frames and eval lists it
       runHost({"eval", "--kitti", data, "--detections", out + "/detections.csv", "--json"});
   REQUIRE(ev.exit_code == 0);
   CHECK(jsonValue(ev.output, "people") == 1);
-  // The pedestrian 8.9 m ahead is one cluster of the run (found or not, it was segmented).
+  // Split from what stands beside them, the pedestrian 8.9 m ahead scores 0.80 (0.33 when
+  // kept whole with the ground near their feet) and is found.
+  CHECK(jsonValue(ev.output, "found") == 1);
+  // Their cluster lies on them.
   bool segmented = false;
   for (const auto& l : lines(readFile(out + "/clusters.csv")))
     if (l.rfind("0.000000,0,", 0) == 0) {
       double x = 0, y = 0;
       long c = 0, n = 0;
       if (std::sscanf(l.c_str(), "0.000000,0,%ld,%ld,%lf,%lf", &c, &n, &x, &y) == 4)
-        segmented |= std::hypot(x - 8.73, y + 1.86) < 0.3;
+        segmented |= std::hypot(x - 8.73, y + 1.86) < 0.4;
     }
   CHECK(segmented);
   // The picture with the labelled boxes and every cluster's score.
