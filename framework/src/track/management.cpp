@@ -58,10 +58,6 @@ TrackStatus ExistenceLlr::step(TrackStatus current, double p_exist) const {
   return current;  // continue the test; a confirmed track stays confirmed
 }
 
-}  // namespace pedtrack::track
-
-namespace pedtrack::track {
-
 double ScoreEvidence::logOdds(double q) {
   const double p = std::clamp(q, 1e-6, 1 - 1e-6);
   return std::clamp(std::log(p / (1 - p)), -3.0, 3.0);

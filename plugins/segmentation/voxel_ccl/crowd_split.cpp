@@ -121,8 +121,7 @@ int splitCrowd(const std::vector<Eigen::Vector3d>& pts, const Eigen::Vector3d& s
       kept.push_back(h);
   heads.swap(kept);
   // Centres from the heads to the torsos: k-means over the points above half the lowest head
-  // (seen from above, a person's legs and bag lie under their torso; a cell map's boundary
-  // between two people, a watershed from the heads, merged more person-frames on the groups).
+  // (seen from above, a person's legs and bag lie under their torso).
   // A head left with under min_share of the points is a raised arm, a bag or a lone return at
   // head height, not a person: it is dropped and the rest shared again.
   while (heads.size() >= 2) {

@@ -29,16 +29,12 @@ struct VoxelCclParams {
   seg::Connectivity connectivity = seg::Connectivity::TwentySix;
   long min_points = 5;
   bool split = false;  // ours (#45); P2 keeps every component whole
-  double crowd_min_head = CrowdSplitParams{}.min_head;
-  double crowd_head_dip = CrowdSplitParams{}.head_dip;
-  double crowd_min_spacing = CrowdSplitParams{}.min_spacing;
-  double crowd_max_extent = CrowdSplitParams{}.max_extent;
-  double crowd_min_share = CrowdSplitParams{}.min_share;
-  double crowd_top_elevation = CrowdSplitParams{}.top_elevation;
+  CrowdSplitParams crowd;
 };
 
 const ParamTable<VoxelCclParams>& table() {
   using P = VoxelCclParams;
+  const auto crowd = [](auto member) { return path(&P::crowd, member); };
   static const auto t =
       ParamTable<P>()
           .real(&P::voxel, "voxel", "m", 0.01, 5, "horizontal voxel side (P2: 10 cm)")
@@ -63,20 +59,20 @@ const ParamTable<VoxelCclParams>& table() {
           .boolean(&P::split, "split",
                    "ours: a component with two or more heads (peaks of its height map "
                    "split_head_dip apart) is split into one cluster per person")
-          .real(&P::crowd_min_head, "split_min_head", "m", 0, 5,
+          .real(crowd(&CrowdSplitParams::min_head), "split_min_head", "m", 0, 5,
                 "split: the lowest head above the ground (a child)")
-          .real(&P::crowd_head_dip, "split_head_dip", "", 0.01, 1,
+          .real(crowd(&CrowdSplitParams::head_dip), "split_head_dip", "", 0.01, 1,
                 "split: how far the highest returns between two heads lie below the lower "
                 "head, as a share of its height (head and neck: 0.25 m of an adult 1.75 m tall)")
-          .real(&P::crowd_min_spacing, "split_min_spacing", "m", 0.05, 5,
+          .real(crowd(&CrowdSplitParams::min_spacing), "split_min_spacing", "m", 0.05, 5,
                 "split: the closest two heads (people shoulder to shoulder)")
-          .real(&P::crowd_max_extent, "split_max_extent", "m", 0.5, 100,
+          .real(crowd(&CrowdSplitParams::max_extent), "split_max_extent", "m", 0.5, 100,
                 "split: components whose horizontal bounding box has a longer diagonal are walls "
                 "or hedges and stay whole")
-          .real(&P::crowd_min_share, "split_min_share", "", 0, 0.5,
+          .real(crowd(&CrowdSplitParams::min_share), "split_min_share", "", 0, 0.5,
                 "split: a head left with a smaller share of the component's points is an arm "
                 "or a bag, not a person")
-          .real(&P::crowd_top_elevation, "split_top_elevation", "deg", 0, 90,
+          .real(crowd(&CrowdSplitParams::top_elevation), "split_top_elevation", "deg", 0, 90,
                 "split: the sensor's highest beam above its horizon (VLP-16: 15, HDL-64: 2; "
                 "0: no limit): a peak within 0.5 deg of it is where the view ends, not a head");
   return t;
@@ -103,14 +99,8 @@ class VoxelCcl : public Segmenter {
         min_points_(std::size_t(p.min_points)),
         connectivity_(p.connectivity),
         split_(p.split),
-        names_(std::make_shared<const std::vector<std::string>>(featureNames())) {
-    crowd_.min_head = p.crowd_min_head;
-    crowd_.head_dip = p.crowd_head_dip;
-    crowd_.min_spacing = p.crowd_min_spacing;
-    crowd_.max_extent = p.crowd_max_extent;
-    crowd_.min_share = p.crowd_min_share;
-    crowd_.top_elevation = p.crowd_top_elevation;
-  }
+        crowd_(p.crowd),
+        names_(std::make_shared<const std::vector<std::string>>(featureNames())) {}
 
   void process(Frame& f) override {
     const auto& c = f.cloud();
@@ -171,10 +161,13 @@ class VoxelCcl : public Segmenter {
     for (int k = 0; k < count; ++k) {
       const std::size_t n = start_[k + 1] - start_[k];
       if (n < min_points_) continue;
-      component_pts_.clear();
-      for (std::size_t m = start_[k]; m < start_[k + 1]; ++m)
-        component_pts_.push_back(aligned_[order_[m]]);
-      const int people = split_ ? splitCrowd(component_pts_, s, crowd_, part_) : 1;
+      int people = 1;
+      if (split_) {
+        component_pts_.clear();
+        for (std::size_t m = start_[k]; m < start_[k + 1]; ++m)
+          component_pts_.push_back(aligned_[order_[m]]);
+        people = splitCrowd(component_pts_, s, crowd_, part_);
+      }
       for (int person = 0; person < people; ++person) {
         Cluster cl;
         pts_.clear();
