@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 
@@ -376,6 +377,22 @@ int evalCommand(const std::vector<std::string>& args) {
     if (s == "--decisions" || s.rfind("--decisions=", 0) == 0) return evalDecisionsCommand(args);
     if (s == "--kitti" || s.rfind("--kitti=", 0) == 0) return evalKittiCommand(args);
   }
+  // KITTI tracking: a --calib, or --truth / --tracks naming KITTI files (.txt) or folders.
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& s = args[i];
+    const auto value = [&](const char* key) -> std::string {
+      const std::string k = key;
+      if (s == k && i + 1 < args.size()) return args[i + 1];
+      return s.rfind(k + "=", 0) == 0 ? s.substr(k.size() + 1) : "";
+    };
+    const auto kitti = [](const std::string& v) {
+      return !v.empty() &&
+             (std::filesystem::path(v).extension() == ".txt" || std::filesystem::is_directory(v));
+    };
+    if (s == "--calib" || s.rfind("--calib=", 0) == 0 || kitti(value("--truth")) ||
+        kitti(value("--tracks")))
+      return evalKittiMotCommand(args);
+  }
   EvalArgs a;
   po::options_description opts("options");
   opts.add_options()("truth", po::value(&a.truth)->composing(),
@@ -437,7 +454,9 @@ int evalCommand(const std::vector<std::string>& args) {
           "truth_points.bin --labels point_labels.bin [options] | --model MODEL.yml --dataset "
           "D.ini [options] (classifiers: `pedtrack eval --model M --help`) | --decisions "
           "RUN_DIR [options] (`pedtrack eval --decisions D --help`) | --kitti DIR --detections "
-          "detections.csv (`pedtrack eval --kitti D --help`)",
+          "detections.csv (`pedtrack eval --kitti D --help`) | --truth LABELS --calib CALIB "
+          "--tracks "
+          "kitti_tracks.txt|RUNS (KITTI tracking: `pedtrack eval --calib C --help`)",
           opts, pos, args, vm))
     return exit_code::kOk;
   a.has_following = vm.count("following") > 0;

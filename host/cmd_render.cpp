@@ -29,7 +29,8 @@ using render::ObjectIndex;
 using render::StreamSummary;
 
 struct RenderArgs {
-  std::string rawlog, tracks, truth, detections, out, center, labels, run, kitti;
+  std::string rawlog, tracks, truth, detections, out, center, labels, run, kitti, kitti_labels,
+      calib;
   std::vector<std::string> plugin_path;
   long frame = -1, max_frames = -1;
   double trail = 2, range = 0, fps = 0, ground_z = 0.15, person_score = 0.5;
@@ -96,6 +97,15 @@ void validate(RenderArgs& a) {
   requireFile("detections", a.detections);
   if (!a.kitti.empty() && !fs::is_directory(fs::path(a.kitti) / "label_2"))
     bad("--kitti '" + a.kitti + "': no label_2/ folder (a KITTI object benchmark folder)");
+  if (!a.kitti_labels.empty()) {
+    requireFile("kitti-labels", a.kitti_labels);
+    // KITTI's layout: label_02/SSSS.txt beside calib/SSSS.txt.
+    const fs::path label(a.kitti_labels);
+    if (a.calib.empty())
+      a.calib = (label.parent_path().parent_path() / "calib" / label.filename()).string();
+    if (!fs::is_regular_file(a.calib))
+      bad("--kitti-labels: no calibration '" + a.calib + "' (give --calib CALIB/SSSS.txt)");
+  }
   if (!std::isfinite(a.person_score)) bad("--person-score: must be a number");
 }
 
@@ -149,6 +159,11 @@ int renderCommand(const std::vector<std::string>& args) {
       "kitti", po::value(&a.kitti),
       "a KITTI object benchmark folder (label_2/, calib/): its labelled boxes over the scan "
       "of the same number (the kitti source's times: scan t x 10)")(
+      "kitti-labels", po::value(&a.kitti_labels),
+      "KITTI tracking labels (label_02/SSSS.txt) of a run on that sequence's detections or "
+      "scans: the labelled pedestrians drawn as the truth, every labelled box in a frame")(
+      "calib", po::value(&a.calib),
+      "the calibration of --kitti-labels (default: calib/SSSS.txt beside label_02/)")(
       "plugin-path", po::value(&a.plugin_path)->composing(), "extra plugin directory (repeatable)")(
       "quiet,q", "no progress output");
   po::positional_options_description pos;
@@ -167,6 +182,22 @@ int renderCommand(const std::vector<std::string>& args) {
                                             : readObjectTable(a.tracks).rows);
   std::unique_ptr<ObjectIndex> truth, detections;
   if (!a.truth.empty()) truth = std::make_unique<ObjectIndex>(readObjectTable(a.truth).rows);
+  // A KITTI tracking sequence's labels, in the Velodyne's frame: frame n at n / 10 s (the
+  // `kitti` and `detections` sources' times without OXTS motion: the scanner is the fixed frame).
+  std::map<long, std::vector<eval::KittiObject>> labelled;
+  if (!a.kitti_labels.empty()) {
+    std::vector<ObjectRow> people;
+    for (const auto& o :
+         eval::readKittiTrackingLabels(a.kitti_labels, eval::readKittiCalib(a.calib))) {
+      if (o.dontCare()) continue;
+      labelled[o.frame].push_back(o);
+      if (!o.person()) continue;
+      ObjectRow r;
+      r.t = double(o.frame) / 10, r.frame = o.frame, r.id = o.track, r.x = o.x, r.y = o.y;
+      people.push_back(r);
+    }
+    if (!truth) truth = std::make_unique<ObjectIndex>(people);
+  }
   if (!a.detections.empty())
     detections = std::make_unique<ObjectIndex>(readDetectionTable(a.detections).rows);
   std::unique_ptr<render::LabelSource> labels;
@@ -211,6 +242,15 @@ int renderCommand(const std::vector<std::string>& args) {
   scene.labels = labels.get();
   scene.scores = a.scores;
   scene.person_score = a.person_score;
+  if (!labelled.empty())
+    scene.boxes = [&labelled](const Frame& f) {
+      std::vector<render::LabelBox> out;
+      const auto it = labelled.find(std::lround(f.t * 10));
+      if (it == labelled.end()) return out;
+      for (const auto& o : it->second)
+        out.push_back({o.x, o.y, o.yaw, o.l, o.w, o.type, o.person()});
+      return out;
+    };
   std::map<long, eval::KittiScanLabels> kitti;
   if (!a.kitti.empty()) {
     kitti = eval::readKittiObjectDir(a.kitti);

@@ -26,6 +26,7 @@ int evalClassifierCommand(const std::vector<std::string>& args);
 int evalDecisionsCommand(const std::vector<std::string>& args);
 /// `pedtrack eval --kitti`: a run on KITTI object benchmark scans against their labels.
 int evalKittiCommand(const std::vector<std::string>& args);
+int evalKittiMotCommand(const std::vector<std::string>& args);
 
 struct StageBenchOptions {
   std::string pipeline, input, topic;

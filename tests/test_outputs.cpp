@@ -69,6 +69,7 @@ TEST_CASE("tracks.csv has the contract's columns and sensor-frame coordinates", 
   a.status = "confirmed";
   a.nis = 1.25;
   a.cluster = 5;
+  a.box = {0.1, 1.7, 0.6, 0.8};
   Track b;
   b.id = 4;
   b.has_shape = true;
@@ -83,13 +84,14 @@ TEST_CASE("tracks.csv has the contract's columns and sensor-frame coordinates", 
   REQUIRE(rows.size() == 3);
   CHECK(rows[0] ==
         "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,model_"
-        "probs,status,nis,cluster");
+        "probs,status,nis,cluster,z,h,w,l");
   CHECK(rows[1] ==
         "1519637061.085268,7,3,1.0000,2.0000,2.0000,0.0000,0.00000,0.5000,0.0000,,,0.01,0,0.02,0."
-        "0000,0.7000;0.3000,confirmed,1.25,5");
+        "0000,0.7000;0.3000,confirmed,1.25,5,0.1000,1.7000,0.6000,0.8000");
   CHECK(rows[2].find(",4,0.0000,0.0000,") != std::string::npos);
   CHECK(rows[2].find(",0.2500,0.1500,,,,") != std::string::npos);
-  CHECK(rows[2].substr(rows[2].size() - 3) == ",,,");  // no status, no nis, no cluster
+  // No status, no nis, no cluster, no box.
+  CHECK(rows[2].substr(rows[2].size() - 7) == ",,,,,,,");
   // The reader gets every column back.
   const ObjectTable t = readObjectTable(dir + "/tracks.csv");
   REQUIRE(t.rows.size() == 2);
@@ -116,19 +118,28 @@ TEST_CASE("detections.csv rows carry both frames and the shape when known", "[ou
   b.alpha = 0.3;
   b.beta = 0.2;
   b.cluster = 2;
-  f.detections = {a, b};
+  Detection c;
+  c.x = 3;
+  c.score = 2.5;
+  c.yaw = 1;
+  c.box = {0.05, 1.7, 0.6, 0.8};
+  f.detections = {a, b, c};
   {
     DetectionsCsvWriter w(dir + "/detections.csv");
     w.write(f);
   }
   const auto rows = lines(readFile(dir + "/detections.csv"));
-  REQUIRE(rows.size() == 3);
-  CHECK(rows[0] == "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster");
-  CHECK(rows[1] == "1519637061.500000,3,1.0000,2.0000,2.0000,0.0000,0.9000,,,,");
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0] == "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster,z,h,w,l");
+  CHECK(rows[1] == "1519637061.500000,3,1.0000,2.0000,2.0000,0.0000,0.9000,,,,,,,,");
   CHECK(rows[2] ==
-        "1519637061.500000,3,1.0000,1.0000,1.0000,0.0000,0.4000,0.50000,0.3000,0.2000,2");
+        "1519637061.500000,3,1.0000,1.0000,1.0000,0.0000,0.4000,0.50000,0.3000,0.2000,2,,,,");
+  // A 3D detector's box: its heading is the yaw, without a torso ellipse.
+  CHECK(rows[3] ==
+        "1519637061.500000,3,3.0000,0.0000,0.0000,-2.0000,2.5000,1.00000,0.0000,0.0000,,0.0500,"
+        "1.7000,0.6000,0.8000");
   const ObjectTable t = readDetectionTable(dir + "/detections.csv");
-  REQUIRE(t.rows.size() == 2);
+  REQUIRE(t.rows.size() == 3);
   CHECK(t.rows[1].id == 1);
   CHECK(t.rows[1].beta == 0.2);
 }

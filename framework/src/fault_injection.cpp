@@ -137,6 +137,7 @@ class FaultInjector : public Sensor {
   double progress() const override { return inner_->progress(); }
   std::size_t entriesSkipped() const override { return inner_->entriesSkipped(); }
   bool live() const override { return inner_->live(); }
+  void results(const Frame& f) override { inner_->results(f); }
 
   std::vector<std::pair<std::string, long>> counters() const override {
     auto c = inner_->counters();

@@ -27,6 +27,17 @@ static void writeClamped(std::ofstream& out, const char* buf, int n, std::size_t
   if (n > 0) out.write(buf, std::min<std::streamsize>(n, std::streamsize(size) - 1));
 }
 
+// The z,h,w,l columns: a 3D box when one is known, else four empty fields.
+static void writeBox(std::ofstream& out, const Box3& b) {
+  if (!b.known() || !std::isfinite(b.z + b.h + b.w + b.l)) {
+    out << ",,,,";
+    return;
+  }
+  char buf[128];
+  writeClamped(out, buf, std::snprintf(buf, sizeof buf, ",%.4f,%.4f,%.4f,%.4f", b.z, b.h, b.w, b.l),
+               sizeof buf);
+}
+
 // Rows reach the disk at least once a second, so an interrupted run keeps what it produced.
 CsvStream::CsvStream(const std::string& path, const char* header) : out_(path), path_(path) {
   if (!out_) throw DataError(path + ": cannot open for writing");
@@ -56,7 +67,7 @@ void CsvStream::close() {
 
 const char* TracksCsvWriter::header() {
   return "t,frame,track,x,y,sensor_x,sensor_y,yaw,vx,vy,alpha,beta,cov_xx,cov_xy,cov_yy,score,"
-         "model_probs,status,nis,cluster";
+         "model_probs,status,nis,cluster,z,h,w,l";
 }
 
 void TracksCsvWriter::write(const Frame& f) {
@@ -101,13 +112,14 @@ void TracksCsvWriter::write(const Frame& f) {
     }
     out_ << ',';
     if (tr.cluster >= 0) out_ << tr.cluster;
+    writeBox(out_, tr.box);
     out_ << '\n';
   }
   frameWritten();
 }
 
 const char* DetectionsCsvWriter::header() {
-  return "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster";
+  return "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster,z,h,w,l";
 }
 
 void DetectionsCsvWriter::write(const Frame& f) {
@@ -118,14 +130,16 @@ void DetectionsCsvWriter::write(const Frame& f) {
     int n = std::snprintf(buf, sizeof buf, "%.6f,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,", f.t, f.index, d.x,
                           d.y, sx, sy, d.score);
     writeClamped(out_, buf, n, sizeof buf);
-    // Detection marks an unknown shape with alpha = beta = 0; its yaw then means nothing either.
-    if (d.alpha > 0 || d.beta > 0) {
+    // Detection marks an unknown shape with alpha = beta = 0 and no box; its yaw then means
+    // nothing either.
+    if (d.alpha > 0 || d.beta > 0 || d.box.known()) {
       n = std::snprintf(buf, sizeof buf, "%.5f,%.4f,%.4f,", d.yaw, d.alpha, d.beta);
       writeClamped(out_, buf, n, sizeof buf);
     } else {
       out_ << ",,,";
     }
     if (d.cluster >= 0) out_ << d.cluster;
+    writeBox(out_, d.box);
     out_ << '\n';
   }
   frameWritten();

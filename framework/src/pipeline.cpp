@@ -155,6 +155,15 @@ RunSummary Pipeline::run(const RunOptions& opt) {
     if (csv && !clusters_csv && !frame.clusters.empty())
       clusters_csv = std::make_unique<ClustersCsvWriter>(opt.out_dir + "/clusters.csv", frame);
     if (clusters_csv) clusters_csv->write(frame);
+    if (csv) {
+      try {  // the source's own results format (kitti_tracks.txt); what is written stays
+        source_->results(frame);
+      } catch (const std::exception& e) {
+        sum.status = "error";
+        sum.error = e.what();
+        break;
+      }
+    }
     if (labels) labels->write(runLabels(frame));
     if (csv && supply.live()) csv->flush();  // a live frame's latency ends with its tracks on disk
     sum.latency.add(msSince(arrival));

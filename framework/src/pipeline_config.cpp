@@ -183,14 +183,17 @@ PipelineConfig PipelineConfig::fromText(const std::string& text, const std::stri
     const std::string ext = fs::path(overrides.input).extension().string();
     model.keys[source].clear();
     if (!model.hasSection(source)) model.sections.push_back(source);
-    // A scenario (.ini) is simulated; KITTI Velodyne scans (a .bin, or a folder of them) and
-    // anything else (a log) are replayed.
+    // A scenario (.ini) is simulated; KITTI Velodyne scans (a .bin, or a folder of them), a
+    // detector's output (KITTI's .txt, pedtrack's detections .csv) and anything else (a log) are
+    // replayed.
     const std::string key = ext == ".ini" ? "scenario" : "file";
     const bool kitti = ext == ".bin" || fs::is_directory(overrides.input);
+    const bool detections = ext == ".txt" || ext == ".csv";
     model.set(source, "plugin",
               ext == ".bag"   ? "rosbag"
               : ext == ".ini" ? "sim"
               : kitti         ? "kitti"
+              : detections    ? "detections"
                               : "rawlog");
     model.set(source, key, absoluteFromCwd(overrides.input));
     from_cli.insert({source, key});

@@ -46,6 +46,14 @@ struct GroundPlane {
   double angleTo(const GroundPlane& o) const;
 };
 
+/// An upright 3D box (a 3D detector's, KITTI's): where its bottom is and how big it is. Its
+/// heading is the owner's yaw; `l` lies along it, `w` across. h = 0: no box known.
+struct Box3 {
+  double z = 0;                ///< m, height of the box's bottom in the robot frame
+  double h = 0, w = 0, l = 0;  ///< m, height, width, length
+  bool known() const { return h > 0; }
+};
+
 /// A cluster that a classifier scored, with the measurement a tracker consumes (fixed frame).
 struct Detection {
   int cluster = -1;            ///< index into Frame::clusters, -1 when not from a cluster
@@ -53,6 +61,7 @@ struct Detection {
   double x = 0, y = 0;         ///< position (m, fixed frame)
   double yaw = 0;              ///< orientation (rad), when the shape gives one
   double alpha = 0, beta = 0;  ///< torso ellipse semi-axes (m), 0 when unknown
+  Box3 box;                    ///< a 3D detector's box (h = 0: none); yaw is its heading
 };
 
 /// A tracked person as reported in tracks.csv (docs/outputs.md).
@@ -63,6 +72,7 @@ struct Track {
   double vx = 0, vy = 0;       ///< m/s, fixed frame
   double alpha = 0, beta = 0;  ///< torso semi-axes (m); written only when has_shape
   bool has_shape = false;
+  Box3 box;  ///< the person's 3D box, smoothed over the detections that updated the track
   double cov_xx = 0, cov_xy = 0, cov_yy = 0;  ///< written only when has_cov
   bool has_cov = false;
   double score = 0;

@@ -39,6 +39,8 @@ class FrameGuard {
   long total() const;
 
  private:
+  // The source hands over detections, not range data: a frame without observations is usual.
+  bool detections_source_ = false;
   enum Kind {
     kBadTime,
     kTimeRepeat,

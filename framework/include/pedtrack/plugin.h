@@ -52,6 +52,11 @@ class Sensor : public Plugin {
   /// the source on its own thread into a bounded queue and drops the oldest frames rather than
   /// fall behind (next() is only ever called from that thread).
   virtual bool live() const { return false; }
+  /// Called with every processed frame after the stages ran and tracks.csv has its rows: a source
+  /// whose dataset has a results format of its own writes it here (the `detections` source's
+  /// kitti_tracks.txt, in the frame its labels use). Throwing fails the run after its outputs
+  /// are closed.
+  virtual void results(const Frame& frame) { (void)frame; }
 };
 
 /// A processing stage: odometry sets the robot's pose, segmenters add clusters, classifiers

@@ -13,43 +13,6 @@
 namespace pedtrack::eval {
 namespace {
 
-// "KEY: v1 v2 ..." (or "KEY v1 v2 ...") lines of a calibration file, by key.
-std::map<std::string, std::vector<double>> calibLines(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw DataError(path + ": cannot open");
-  std::map<std::string, std::vector<double>> out;
-  std::string line;
-  int n = 0;
-  while (std::getline(f, line)) {
-    ++n;
-    std::istringstream is(line);
-    std::string key;
-    if (!(is >> key)) continue;
-    if (key.back() == ':') key.pop_back();
-    std::vector<double> v;
-    double d;
-    while (is >> d) v.push_back(d);
-    if (!is.eof())
-      throw DataError(path + ": line " + std::to_string(n) + " (" + key + "): not a number");
-    out[key] = std::move(v);
-  }
-  return out;
-}
-
-const std::vector<double>& need(const std::map<std::string, std::vector<double>>& lines,
-                                const std::string& path, std::initializer_list<const char*> keys,
-                                std::size_t count) {
-  for (const char* k : keys) {
-    const auto it = lines.find(k);
-    if (it == lines.end()) continue;
-    if (it->second.size() != count)
-      throw DataError(path + ": " + k + ": expected " + std::to_string(count) + " numbers, got " +
-                      std::to_string(it->second.size()));
-    return it->second;
-  }
-  throw DataError(path + ": no " + std::string(*keys.begin()) + " line");
-}
-
 // The object from a label line's values from `type` on (type truncated occluded alpha x1 y1 x2
 // y2 h w l x y z rotation_y).
 KittiObject fromFields(const std::vector<std::string>& f, std::size_t at, const KittiCalib& c,
@@ -70,9 +33,7 @@ KittiObject fromFields(const std::vector<std::string>& f, std::size_t at, const 
   o.h = v[7], o.w = v[8], o.l = v[9];
   const Eigen::Vector3d p = c.veloFromRect({v[10], v[11], v[12]});
   o.x = p.x(), o.y = p.y(), o.z = p.z();
-  // rotation_y turns the box about the camera's y (down) axis from the camera's x (right):
-  // in the Velodyne frame (x forward, z up) that is -rotation_y - pi/2.
-  o.yaw = std::remainder(-v[13] - M_PI / 2, 2 * M_PI);
+  o.yaw = veloYawFromRotationY(v[13]);
   return o;
 }
 
@@ -85,38 +46,6 @@ std::vector<std::string> split(const std::string& line) {
 }
 
 }  // namespace
-
-Eigen::Vector3d KittiCalib::veloFromRect(const Eigen::Vector3d& rect) const {
-  const Eigen::Vector3d cam = R0.inverse() * rect;
-  const Eigen::Matrix3d R = velo_to_cam.leftCols<3>();
-  return R.transpose() * (cam - velo_to_cam.col(3));
-}
-
-bool KittiCalib::inCameraView(const Eigen::Vector3d& velo) const {
-  const Eigen::Vector3d rect = R0 * (velo_to_cam.leftCols<3>() * velo + velo_to_cam.col(3));
-  if (rect.z() <= 0.1) return false;
-  const Eigen::Vector3d uvw = P2.leftCols<3>() * rect + P2.col(3);
-  const double u = uvw.x() / uvw.z();
-  return u >= 0 && u <= 2 * P2(0, 2);
-}
-
-KittiCalib readKittiCalib(const std::string& path) {
-  const auto lines = calibLines(path);
-  KittiCalib c;
-  const auto& p2 = need(lines, path, {"P2"}, 12);
-  const auto& r0 = need(lines, path, {"R0_rect", "R_rect"}, 9);
-  const auto& tr = need(lines, path, {"Tr_velo_to_cam", "Tr_velo_cam"}, 12);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 4; ++j) {
-      c.P2(i, j) = p2[std::size_t(4 * i + j)];
-      c.velo_to_cam(i, j) = tr[std::size_t(4 * i + j)];
-      if (j < 3) c.R0(i, j) = r0[std::size_t(3 * i + j)];
-    }
-  if (std::abs(c.R0.determinant() - 1) > 0.01 ||
-      std::abs(c.velo_to_cam.leftCols<3>().determinant() - 1) > 0.01)
-    throw DataError(path + ": R0_rect or Tr_velo_to_cam is not a rotation");
-  return c;
-}
 
 bool KittiObject::contains(double px, double py, double margin) const {
   const double c = std::cos(yaw), s = std::sin(yaw);

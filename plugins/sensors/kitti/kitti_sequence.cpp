@@ -128,37 +128,4 @@ std::string findOxts(const std::string& input) {
   return "";
 }
 
-Oxts readOxts(const std::string& oxts, long index) {
-  std::string file = oxts, line;
-  long want = index;
-  if (fs::is_directory(oxts)) {
-    // KITTI raw names a scan's record like the scan: 10 digits.
-    char name[32];
-    std::snprintf(name, sizeof name, "%010ld.txt", index);
-    file = (fs::path(oxts) / name).string();
-    want = 0;
-  }
-  std::ifstream f(file);
-  if (!f)
-    throw DataError(file + ": cannot open (the OXTS record of scan " + std::to_string(index) + ")");
-  for (long k = 0; k <= want; ++k)
-    if (!std::getline(f, line))
-      throw DataError(file + ": no line " + std::to_string(want + 1) +
-                      " (the OXTS record of scan " + std::to_string(index) + ")");
-  std::istringstream is(line);
-  Oxts o;
-  if (!(is >> o.lat >> o.lon >> o.alt >> o.roll >> o.pitch >> o.yaw) ||
-      !std::isfinite(o.lat + o.lon + o.alt + o.roll + o.pitch + o.yaw))
-    throw DataError(file + ": line " + std::to_string(want + 1) +
-                    ": expected lat lon alt roll pitch yaw first (KITTI OXTS)");
-  return o;
-}
-
-mrpt::poses::CPose3D oxtsPose(const Oxts& o, double scale) {
-  constexpr double kEarthRadius = 6378137;  // m, as KITTI's devkit
-  const double x = scale * o.lon * M_PI * kEarthRadius / 180;
-  const double y = scale * kEarthRadius * std::log(std::tan((90 + o.lat) * M_PI / 360));
-  return mrpt::poses::CPose3D(x, y, o.alt, o.yaw, o.pitch, o.roll);
-}
-
 }  // namespace pedtrack::kitti

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "pedtrack/kitti_oxts.h"
+
 namespace pedtrack::kitti {
 
 struct Scan {
@@ -28,23 +30,9 @@ std::vector<Scan> listScans(const std::string& input, double rate);
 /// DataError naming the file (unreadable, not a whole number of 16-byte points).
 mrpt::maps::CPointsMapXYZI::Ptr readScan(const std::string& path);
 
-/// One OXTS record's position and attitude (KITTI's first six values).
-struct Oxts {
-  double lat = 0, lon = 0, alt = 0;     ///< deg, deg, m
-  double roll = 0, pitch = 0, yaw = 0;  ///< rad
-};
-
 /// Where the OXTS records of `input`'s scans are when not given: KITTI raw's `oxts/data` folder
 /// (one file per scan) beside `velodyne_points`, or tracking's `oxts/SSSS.txt` (one line per scan)
 /// for `velodyne/SSSS`; empty when neither exists (the object dataset has none).
 std::string findOxts(const std::string& input);
-
-/// The record of scan `index` from `oxts`: a folder (its file named like the scan, .txt) or a file
-/// (its line `index`, from 0). Throws DataError naming the file and line at fault.
-Oxts readOxts(const std::string& oxts, long index);
-
-/// KITTI devkit's convertOxtsToPose: a Mercator projection with the scale of the sequence's first
-/// latitude (`scale` = cos(lat0)), x east, y north, z up; rotation Rz(yaw) Ry(pitch) Rx(roll).
-mrpt::poses::CPose3D oxtsPose(const Oxts& o, double scale);
 
 }  // namespace pedtrack::kitti

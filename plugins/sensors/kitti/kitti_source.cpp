@@ -5,6 +5,7 @@
 #include <mrpt/system/datetime.h>
 
 #include <filesystem>
+#include <optional>
 
 #include "kitti_sequence.h"
 #include "pedtrack/errors.h"
@@ -56,12 +57,10 @@ class KittiSource : public Sensor {
       : scans_(listScans(p.file, p.scan_rate)),
         mount_(0, 0, p.mount_z, 0, 0, 0),
         realtime_(p.replay.realtime) {
-    oxts_ = p.oxts == "auto" ? findOxts(p.file) : p.oxts == "none" ? "" : p.oxts;
+    const std::string oxts = p.oxts == "auto" ? findOxts(p.file) : p.oxts == "none" ? "" : p.oxts;
     if (p.oxts != "auto" && p.oxts != "none" && !std::filesystem::exists(p.oxts))
       throw ConfigError(oxts_where + ": '" + p.oxts + "' does not exist");
-    // The robot frame on the road under the scanner, in the OXTS unit's frame.
-    robot_in_imu_ = mrpt::poses::CPose3D(p.imu_to_velo[0], p.imu_to_velo[1],
-                                         p.imu_to_velo[2] - p.mount_z, 0, 0, 0);
+    if (!oxts.empty()) oxts_.emplace(oxts, p.imu_to_velo, p.mount_z);
   }
 
   bool next(Frame& frame) override {
@@ -73,13 +72,8 @@ class KittiSource : public Sensor {
     obs->sensorLabel = "velodyne";
     obs->timestamp = mrpt::Clock::fromDouble(s.t);
     frame.t = s.t;
-    if (!oxts_.empty()) {
-      const Oxts o = readOxts(oxts_, s.index);
-      // The sequence's first record fixes the projection's scale and the fixed frame's origin.
-      if (done_ == 0) scale_ = std::cos(o.lat * M_PI / 180);
-      const mrpt::poses::CPose3D robot = oxtsPose(o, scale_) + robot_in_imu_;
-      if (done_ == 0) origin_inv_ = -robot;
-      frame.robot_pose = origin_inv_ + robot;
+    if (oxts_) {
+      frame.robot_pose = oxts_->robotPose(s.index);
       frame.has_odometry = true;
     }
     frame.observations.push_back(obs);
@@ -94,9 +88,8 @@ class KittiSource : public Sensor {
 
  private:
   std::vector<Scan> scans_;
-  mrpt::poses::CPose3D mount_, robot_in_imu_, origin_inv_;
-  std::string oxts_;
-  double scale_ = 1;
+  mrpt::poses::CPose3D mount_;
+  std::optional<OxtsTrajectory> oxts_;
   bool realtime_;
   std::size_t done_ = 0;
   ReplayPacer pacer_;

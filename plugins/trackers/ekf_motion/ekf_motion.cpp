@@ -11,6 +11,7 @@
 #include "pedtrack/errors.h"
 #include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
+#include "pedtrack/track/box_filter.h"
 #include "pedtrack/track/gnn.h"
 #include "pedtrack/track/kalman.h"
 #include "pedtrack/track/management.h"
@@ -29,6 +30,7 @@ struct MotionTrack {
   double score = 0;
   int misses = 0;
   int cluster = -1;
+  BoxFilter box;  // a 3D detector's box, smoothed
 };
 
 struct EkfMotionParams {
@@ -129,6 +131,7 @@ class EkfMotion : public Tracker {
       t.last_x = d.x, t.last_y = d.y, t.last_t = f.t;
       t.score = d.score;
       t.cluster = d.cluster;
+      t.box.update(d.box, d.yaw, d.score, 1);
       tracks_.push_back(t);
     }
     report(f);
@@ -186,6 +189,7 @@ class EkfMotion : public Tracker {
     t.score = d.score;
     t.misses = 0;
     t.cluster = d.cluster;
+    t.box.update(d.box, d.yaw, d.score, 1);
   }
 
   void report(Frame& f) {
@@ -204,6 +208,8 @@ class EkfMotion : public Tracker {
       row.score = t.score;
       row.status = t.established ? (t.misses ? "coasting" : "confirmed") : "tentative";
       row.cluster = t.cluster;
+      row.box = t.box.box;
+      if (row.box.known()) row.yaw = t.box.yaw;  // a 3D detector's heading, not the velocity's
       f.tracks.push_back(std::move(row));
     }
   }

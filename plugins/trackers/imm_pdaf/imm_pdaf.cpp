@@ -2,6 +2,7 @@
 // rad/s), each mode updated by probabilistic data association, with integrated track existence
 // (IPDA, P4 eq. 1–2) whose log-likelihood ratio confirms and deletes tracks (eq. 3). Several
 // people at once through JPDA where gates overlap (or independent PDA per track).
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "pedtrack/errors.h"
 #include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
+#include "pedtrack/track/box_filter.h"
 #include "pedtrack/track/imm.h"
 #include "pedtrack/track/kalman.h"
 #include "pedtrack/track/management.h"
@@ -35,6 +37,7 @@ struct Settings {
   double p_survive = 0.98, p_birth = 0, p_init = 0.2;
   double alpha_t = 0.01, beta_t = 0.01;  // P4 eq. 3
   double init_speed_sigma = 1, min_score = 0, surface_offset = 0, merge_distance = 0.35;
+  double score_prior = 0;  // 0: scores only threshold; else the share of detections that are people
   bool jpda = true, report_tentative = false;
 };
 
@@ -70,6 +73,11 @@ const ParamTable<Settings>& table() {
           .real(&P::init_speed_sigma, "init_speed_sigma", "m/s", 0.01, 10,
                 "standard deviation of a new track's velocity (it starts at rest)")
           .real(&P::min_score, "min_score", "", 0, 1, "detections scoring below are ignored")
+          .real(&P::score_prior, "score_prior", "", 0, 0.99,
+                "the share of all detections that are people, with scores read as the "
+                "probability P that a detection is a person: each detection's evidence is "
+                "weighted by its likelihood ratio odds(P) / odds(score_prior) (amplitude-aided "
+                "PDA) and a new track starts at existence P; 0: scores only pass min_score")
           .real(&P::surface_offset, "surface_offset", "m", -1, 1,
                 "each detection is moved this far away from the sensor (a scan sees the near "
                 "surface of a body; 0: as detected)")
@@ -87,6 +95,7 @@ struct ImmTrack {
   ImmState imm;
   double existence = 0;
   TrackStatus status = TrackStatus::Tentative;
+  BoxFilter box;  // a 3D detector's box and scores, smoothed over the detections weighted by β
 };
 
 ExistenceLlr makeLlr(const ParamSet& p, const Settings& s) {
@@ -149,15 +158,21 @@ class ImmPdaf : public Tracker {
       imm_->predict(t.imm, dt);
     }
     std::vector<Eigen::VectorXd> z;
+    std::vector<const Detection*> zdet;  // the detection of each measurement
     const Eigen::Vector2d sensor(f.sensor_pose.x(), f.sensor_pose.y());
     for (const Detection& d : f.detections) {
       if (!(d.score >= s_.min_score)) continue;
+      zdet.push_back(&d);
       // A 2D scan sees the near side of a body: move the detection back along the line of sight.
       const Eigen::Vector2d p(d.x, d.y), ray = p - sensor;
       const double range = ray.norm();
       z.push_back(range > 1e-6 ? Eigen::Vector2d(p + ray / range * s_.surface_offset) : p);
     }
     const OcclusionMap occlusion(f);
+    // The score's likelihood ratio, person against clutter (1: the score is not used as evidence).
+    std::vector<double> ratio(z.size(), 1.0);
+    if (s_.score_prior > 0)
+      for (std::size_t i = 0; i < z.size(); ++i) ratio[i] = scoreRatio(zdet[i]->score);
 
     // Gating on the combined prediction; per-mode likelihoods of the validated measurements.
     const Eigen::Index T = Eigen::Index(tracks_.size()), M = Eigen::Index(z.size());
@@ -191,12 +206,19 @@ class ImmPdaf : public Tracker {
       PdaParams pp{pd, s_.p_gate, s_.clutter_density};
       const double lambda = clutterDensity(pp, gated.size(), gateVolume(gamma_, S), tr.existence);
       evidence.row(t) *= pd / lambda;
-      mode_lik[t] *= pd / lambda;  // now e_ij: per-mode evidence
+      mode_lik[t] *= pd / lambda;     // now e_ij: per-mode evidence
+      for (Eigen::Index i : gated) {  // a surer detection is likelier the person's
+        evidence(t, i) *= ratio[std::size_t(i)];
+        mode_lik[t].row(i) *= ratio[std::size_t(i)];
+      }
     }
     const AssociationProbabilities a =
         s_.jpda ? jpda(evidence, miss) : independentPda(evidence, miss);
 
-    for (Eigen::Index t = 0; t < T; ++t) update(tracks_[t], a, t, miss(t), mode_lik[t], z);
+    for (Eigen::Index t = 0; t < T; ++t) {
+      update(tracks_[t], a, t, miss(t), mode_lik[t], z);
+      updateBox(tracks_[t], a, t, zdet);
+    }
     for (Eigen::Index t = 0; t < T; ++t)
       tracks_[t].status = llr_.step(tracks_[t].status, tracks_[t].existence);
     mergeDuplicates();
@@ -210,7 +232,13 @@ class ImmPdaf : public Tracker {
                             s_.init_speed_sigma * s_.init_speed_sigma,
                             s_.init_speed_sigma * s_.init_speed_sigma)
                 .asDiagonal();
-      tracks_.push_back({ids_.next(), imm_->init(g), s_.p_init, TrackStatus::Tentative});
+      tracks_.push_back({ids_.next(),
+                         imm_->init(g),
+                         initialExistence(zdet[std::size_t(i)]->score),
+                         TrackStatus::Tentative,
+                         {}});
+      tracks_.back().box.update(zdet[std::size_t(i)]->box, zdet[std::size_t(i)]->yaw,
+                                zdet[std::size_t(i)]->score, 1);
       best_nis.push_back(std::nan(""));
     }
     report(f, best_nis);
@@ -249,6 +277,45 @@ class ImmPdaf : public Tracker {
     Imm::updateProbabilities(tr.imm, log_lik);
   }
 
+  static double clampProbability(double p) { return std::clamp(p, 1e-6, 1 - 1e-6); }
+  double scoreRatio(double score) const {
+    const double p = clampProbability(score), q = s_.score_prior;
+    return (p / (1 - p)) / (q / (1 - q));
+  }
+  // A new track's existence: p_init, or with scores as evidence the detection's P, kept strictly
+  // between the deletion and confirmation thresholds (one more look decides).
+  double initialExistence(double score) const {
+    if (!(s_.score_prior > 0)) return s_.p_init;
+    const auto prob = [](double llr) { return 1 / (1 + std::exp(-llr)); };
+    const double lo = prob(llr_.deleteThreshold()), hi = prob(llr_.confirmThreshold());
+    const double margin = 1e-3 * (hi - lo);
+    return std::clamp(clampProbability(score), lo + margin, hi - margin);
+  }
+
+  // The box moves towards the detections' boxes, each as much as it is the track's (β_i).
+  // So does the detection score.
+  static void updateBox(ImmTrack& tr, const AssociationProbabilities& a, Eigen::Index t,
+                        const std::vector<const Detection*>& zdet) {
+    double weight = 0, score = 0, box_weight = 0, best = 0, yaw = 0;
+    Box3 mean;
+    for (std::size_t i = 0; i < zdet.size(); ++i) {
+      const double b = a.beta(t, Eigen::Index(i));
+      if (!(b > 0)) continue;
+      weight += b;
+      score += b * zdet[i]->score;
+      if (!zdet[i]->box.known()) continue;
+      if (b > best) best = b, yaw = zdet[i]->yaw;  // headings do not average: the likeliest's
+      const Box3& d = zdet[i]->box;
+      box_weight += b;
+      mean.z += b * d.z, mean.h += b * d.h, mean.w += b * d.w, mean.l += b * d.l;
+    }
+    if (!(weight > 0)) return;
+    // Detections without a box say nothing of it (mean.h stays 0 when none has one).
+    if (box_weight > 0)
+      mean.z /= box_weight, mean.h /= box_weight, mean.w /= box_weight, mean.l /= box_weight;
+    tr.box.update(mean, yaw, score / weight, weight);
+  }
+
   // Two tracks on one person: the one less sure to exist goes.
   void mergeDuplicates() {
     for (std::size_t a = 0; a < tracks_.size(); ++a)
@@ -275,10 +342,13 @@ class ImmPdaf : public Tracker {
       if (tr.status == TrackStatus::Deleted) continue;
       if (tr.status == TrackStatus::Confirmed || s_.report_tentative) {
         Track row = trackRow(tr.id, Imm::combine(tr.imm), imm_->model(0));
-        row.score = tr.existence;
+        // With scores as evidence, how sure the detector was too: existence saturates near 1.
+        row.score = s_.score_prior > 0 ? tr.existence * tr.box.score : tr.existence;
         row.model_probs.assign(tr.imm.mu.data(), tr.imm.mu.data() + tr.imm.mu.size());
         row.status = toString(tr.status);
         row.nis = nis[k];
+        row.box = tr.box.box;
+        if (row.box.known()) row.yaw = tr.box.yaw;  // a 3D detector's heading, not the velocity's
         f.tracks.push_back(std::move(row));
       }
       alive.push_back(std::move(tr));

@@ -7,25 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "pedtrack/kitti_calib.h"
+
 namespace pedtrack::eval {
 
-/// One calibration file (`calib/NNNNNN.txt` or `calib/SSSS.txt`): the left colour camera's
-/// projection P2, the rectifying rotation R0_rect and the Velodyne-to-camera transform (the
-/// tracking benchmark's own spelling, `R_rect` and `Tr_velo_cam`, is read too).
-struct KittiCalib {
-  Eigen::Matrix<double, 3, 4> P2 = Eigen::Matrix<double, 3, 4>::Zero();
-  Eigen::Matrix3d R0 = Eigen::Matrix3d::Identity();
-  Eigen::Matrix<double, 3, 4> velo_to_cam = Eigen::Matrix<double, 3, 4>::Zero();
-
-  /// A point of the rectified camera frame (x right, y down, z forward) in the Velodyne frame.
-  Eigen::Vector3d veloFromRect(const Eigen::Vector3d& rect) const;
-  /// Whether a Velodyne-frame point is in front of the camera and projects inside the image,
-  /// whose width is taken as twice P2's principal point (KITTI's images are 1,224-1,242 px).
-  bool inCameraView(const Eigen::Vector3d& velo) const;
-};
-
-/// Reads a calibration file; throws DataError naming the file and the key at fault.
-KittiCalib readKittiCalib(const std::string& path);
+using pedtrack::KittiCalib;
+using pedtrack::readKittiCalib;
 
 /// One labelled object, its box in the Velodyne frame.
 struct KittiObject {

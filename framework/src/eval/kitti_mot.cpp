@@ -1,0 +1,281 @@
+#include "pedtrack/eval/kitti_mot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "pedtrack/assignment.h"
+#include "pedtrack/errors.h"
+
+namespace pedtrack::eval {
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// KITTI counts the class and its neighbour (ignored where found, never a false positive).
+std::string neighbourOf(const std::string& cls) {
+  return cls == "pedestrian" ? "person_sitting" : cls == "car" ? "van" : "";
+}
+
+// One sequence, read once: labels and tracker boxes by frame, and each track's mean score.
+struct Prepared {
+  long frames = 0;
+  std::vector<std::vector<const KittiTrackRow*>> truth, dontcare, tracks;
+  std::vector<std::vector<std::size_t>> track_index;  // into `ever_matched`
+  std::map<long, double> mean_score;                  // by track id
+  std::set<long> truth_ids;
+};
+
+Prepared prepare(const KittiSequence& s, const KittiMotOptions& o) {
+  const std::string cls = o.object_class, near = neighbourOf(cls);
+  const auto kept = [&](const std::string& t) {
+    return t.find(cls) != std::string::npos ||
+           (!near.empty() && t.find(near) != std::string::npos) ||
+           t.find("dontcare") != std::string::npos;
+  };
+  Prepared p;
+  long last = -1;
+  for (const auto& r : s.truth) last = std::max(last, r.frame);
+  p.frames = s.frames > 0 ? s.frames : last + 1;
+  const std::size_t n = std::size_t(std::max(0L, p.frames));
+  p.truth.resize(n), p.dontcare.resize(n), p.tracks.resize(n), p.track_index.resize(n);
+  for (const auto& r : s.truth) {
+    if (!kept(r.type) || r.frame < 0 || r.frame >= p.frames) continue;
+    if (r.type == "dontcare") {
+      p.dontcare[std::size_t(r.frame)].push_back(&r);
+    } else if (r.id != -1) {
+      p.truth[std::size_t(r.frame)].push_back(&r);
+      p.truth_ids.insert(r.id);
+    }
+  }
+  std::map<long, std::pair<double, long>> sums;
+  std::set<std::pair<long, long>> seen;
+  for (std::size_t k = 0; k < s.tracks.size(); ++k) {
+    const auto& r = s.tracks[k];
+    if (!kept(r.type) || r.type == "dontcare" || r.id == -1) continue;
+    if (!seen.insert({r.frame, r.id}).second)
+      throw DataError(s.name + ": frame " + std::to_string(r.frame) + " has track " +
+                      std::to_string(r.id) + " twice");
+    auto& [sum, count] = sums[r.id];
+    sum += r.score, ++count;  // frames past the labels count too (as KITTI's tool does)
+    if (r.frame < 0 || r.frame >= p.frames) continue;
+    p.tracks[std::size_t(r.frame)].push_back(&r);
+    p.track_index[std::size_t(r.frame)].push_back(k);
+  }
+  for (const auto& [id, sc] : sums) p.mean_score[id] = sc.first / double(sc.second);
+  return p;
+}
+
+double overlapShare(const KittiTrackRow& t, const KittiTrackRow& d) {
+  const double w = std::min(t.x2, d.x2) - std::max(t.x1, d.x1);
+  const double h = std::min(t.y2, d.y2) - std::max(t.y1, d.y1);
+  const double area = (t.x2 - t.x1) * (t.y2 - t.y1);
+  return w <= 0 || h <= 0 || area <= 0 ? 0 : w * h / area;
+}
+
+// One pass at a track-score threshold: the counts, and the matched tracks' scores. `ever` is
+// KITTI's `valid` flag per tracker box, which its tool never resets between passes: a box matched
+// once is never ignored again (kept so the figures equal the tool's).
+KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<char>>& ever,
+                    double threshold, const KittiMotOptions& o, std::vector<double>* scores) {
+  KittiMotCounts c;
+  const std::string near = neighbourOf(o.object_class);
+  const bool by_distance = o.max_distance > 0;
+  for (std::size_t si = 0; si < seqs.size(); ++si) {
+    const Prepared& p = seqs[si];
+    std::map<long, std::vector<std::pair<long, bool>>>
+        traj;  // truth id -> (track id | -1, ignored)
+    for (std::size_t f = 0; f < std::size_t(p.frames); ++f) {
+      const auto& G = p.truth[f];
+      std::vector<const KittiTrackRow*> T;
+      std::vector<std::size_t> Ti;
+      for (std::size_t k = 0; k < p.tracks[f].size(); ++k)
+        if (p.mean_score.at(p.tracks[f][k]->id) >= threshold)
+          T.push_back(p.tracks[f][k]), Ti.push_back(p.track_index[f][k]);
+      const int n = int(G.size()), m = int(T.size());
+      std::vector<double> cost(std::size_t(n * m)), sim(std::size_t(n * m));
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+          const auto &a = G[std::size_t(i)]->box, &b = T[std::size_t(j)]->box;
+          const std::size_t k = std::size_t(i * m + j);
+          sim[k] = by_distance ? std::hypot(a.x - b.x, a.z - b.z) : kittiIou3d(a, b);
+          cost[k] = by_distance ? sim[k] : 1 - sim[k];
+        }
+      const Assignment as =
+          n && m ? solveAssignment(cost, n, m, by_distance ? o.max_distance : 1 - o.min_iou)
+                 : Assignment{std::vector<int>(std::size_t(n), -1),
+                              std::vector<int>(std::size_t(m), -1), 0};
+      long ignored_fn = 0, ignored_tp = 0, ignored_trk = 0, matched = 0;
+      for (int i = 0; i < n; ++i) {
+        const KittiTrackRow& g = *G[std::size_t(i)];
+        const bool ignored = g.occluded > o.max_occlusion || g.truncated > o.max_truncation ||
+                             (!near.empty() && g.type == near);
+        const int j = as.row_to_col.empty() ? -1 : as.row_to_col[std::size_t(i)];
+        if (j >= 0) {
+          ++matched;
+          ignored_tp += ignored;
+          c.sum_similarity += sim[std::size_t(i * m + j)];
+          ever[si][Ti[std::size_t(j)]] = 1;
+          if (scores) scores->push_back(p.mean_score.at(T[std::size_t(j)]->id));
+        } else {
+          ignored_fn += ignored;
+        }
+        traj[g.id].push_back({j >= 0 ? T[std::size_t(j)]->id : -1, ignored});
+      }
+      for (int j = 0; j < m; ++j) {
+        if ((!as.col_to_row.empty() && as.col_to_row[std::size_t(j)] >= 0) ||
+            ever[si][Ti[std::size_t(j)]])
+          continue;
+        const KittiTrackRow& t = *T[std::size_t(j)];
+        bool ignore = (!near.empty() && t.type == near) || std::abs(t.y2 - t.y1) <= o.min_height;
+        for (const KittiTrackRow* d : p.dontcare[f]) ignore = ignore || overlapShare(t, *d) > 0.5;
+        ignored_trk += ignore;
+      }
+      c.tp += matched;
+      c.ignored_tp += ignored_tp;
+      c.fn += n - matched - ignored_fn;
+      c.fp += m - matched - ignored_trk;
+      c.n_gt += n - ignored_fn - ignored_tp;
+    }
+    // Per labelled trajectory, over its appearances (KITTI's rules, docs/evaluation.md).
+    for (const long id : p.truth_ids) {
+      ++c.trajectories;
+      const auto it = traj.find(id);
+      if (it == traj.end()) continue;
+      const auto& a = it->second;
+      const std::size_t K = a.size();
+      long n_ign = 0;
+      bool any = false;
+      for (const auto& [t, ig] : a) n_ign += ig, any = any || t != -1;
+      if (n_ign == long(K)) {
+        --c.trajectories;  // wholly ignored: not scored
+        continue;
+      }
+      if (!any) {
+        ++c.mostly_lost;
+        continue;
+      }
+      long last = a[0].first, tracked = a[0].first != -1;
+      for (std::size_t k = 1; k < K; ++k) {
+        const long g = a[k].first, prev = a[k - 1].first;
+        if (a[k].second) {
+          last = -1;
+          continue;
+        }
+        if (last != g && last != -1 && g != -1 && prev != -1) ++c.ids;
+        if (k < K - 1 && prev != g && last != -1 && g != -1 && a[k + 1].first != -1) ++c.frag;
+        if (g != -1) ++tracked, last = g;
+      }
+      if (K > 1 && a[K - 2].first != a[K - 1].first && last != -1 && a[K - 1].first != -1 &&
+          !a[K - 1].second)
+        ++c.frag;
+      const double ratio = double(tracked) / double(long(K) - n_ign);
+      ratio > 0.8 ? ++c.mostly_tracked : ratio < 0.2 ? ++c.mostly_lost : ++c.partly_tracked;
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+double KittiMotCounts::mota() const {
+  return n_gt > 0 ? 1 - double(fn + fp + ids) / double(n_gt)
+                  : -std::numeric_limits<double>::infinity();
+}
+double KittiMotCounts::motp() const {
+  return tp > 0 ? sum_similarity / double(tp) : 0;
+}
+double KittiMotCounts::recall() const {
+  return tp + fn > 0 ? double(tp) / double(tp + fn) : 0;
+}
+double KittiMotCounts::precision() const {
+  return tp + fp > 0 ? double(tp) / double(tp + fp) : 0;
+}
+double KittiMotCounts::smota(double r) const {
+  if (n_gt <= 0 || r <= 0) return 0;
+  const double v = 1 - (double(fn + fp + ids) - (1 - r) * double(n_gt)) / (r * double(n_gt));
+  return std::clamp(v, 0.0, 1.0);
+}
+
+KittiMotResult evaluateKittiMot(std::vector<KittiSequence> sequences, const KittiMotOptions& o) {
+  std::vector<Prepared> seqs;
+  std::vector<std::vector<char>> ever;
+  for (const auto& s : sequences) {
+    seqs.push_back(prepare(s, o));
+    ever.emplace_back(s.tracks.size(), 0);
+  }
+  KittiMotResult res;
+  std::vector<double> scores;
+  const KittiMotCounts all = pass(seqs, ever, -1e4, o, &scores);
+  // The recall levels 1/40 ... 40/40: the matched score at which each is (nearest) reached.
+  constexpr int kLevels = 40;
+  std::sort(scores.begin(), scores.end(), std::greater<>());
+  const double num_gt = double(all.tp + all.fn);
+  std::vector<std::pair<double, double>> levels;  // (threshold, recall)
+  double current = 0;
+  for (std::size_t i = 0; i < scores.size() && num_gt > 0; ++i) {
+    const double left = double(i + 1) / num_gt;
+    const double right = i + 1 < scores.size() ? double(i + 2) / num_gt : left;
+    if (i + 1 < scores.size() && right - current < current - left) continue;
+    levels.push_back({scores[i], current});
+    current += 1.0 / kLevels;
+  }
+  if (!levels.empty()) levels.erase(levels.begin());  // recall 0 is not a level
+  double best_mota = 0;
+  for (const auto& [threshold, r] : levels) {
+    const KittiMotCounts c = pass(seqs, ever, threshold, o, nullptr);
+    res.samota += c.smota(r);
+    res.amota += c.mota();
+    res.amotp += c.motp();
+    if (c.mota() > best_mota) best_mota = c.mota(), res.threshold = threshold;
+  }
+  res.samota /= kLevels, res.amota /= kLevels, res.amotp /= kLevels;
+  res.levels = int(levels.size());
+  res.best = pass(seqs, ever, res.threshold, o, nullptr);
+  return res;
+}
+
+std::vector<KittiTrackRow> readKittiTrackFile(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw DataError(path + ": cannot open");
+  std::vector<KittiTrackRow> out;
+  std::string line;
+  for (long n = 1; std::getline(f, line); ++n) {
+    std::istringstream is(line);
+    std::vector<std::string> v;
+    for (std::string s; is >> s;) v.push_back(s);
+    if (v.empty()) continue;
+    const std::string where = path + ": line " + std::to_string(n);
+    if (v.size() != 17 && v.size() != 18)
+      throw DataError(where +
+                      ": expected 17 or 18 values (frame track_id type truncated occluded "
+                      "alpha x1 y1 x2 y2 h w l x y z rotation_y [score]), got " +
+                      std::to_string(v.size()));
+    std::vector<double> d(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (i == 2) continue;
+      char* end = nullptr;
+      d[i] = std::strtod(v[i].c_str(), &end);
+      if (end == v[i].c_str() || *end || !std::isfinite(d[i]))
+        throw DataError(where + ": value " + std::to_string(i + 1) + " '" + v[i] +
+                        "' is not a number");
+    }
+    KittiTrackRow r;
+    r.frame = long(d[0]), r.id = long(d[1]), r.type = lower(v[2]);
+    r.truncated = int(d[3]), r.occluded = int(d[4]);
+    r.x1 = d[6], r.y1 = d[7], r.x2 = d[8], r.y2 = d[9];
+    r.box = {d[10], d[11], d[12], d[13], d[14], d[15], d[16]};
+    if (v.size() == 18) r.score = d[17];
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace pedtrack::eval

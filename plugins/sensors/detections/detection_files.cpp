@@ -1,0 +1,152 @@
+#include "detection_files.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "pedtrack/errors.h"
+#include "pedtrack/text.h"
+
+namespace pedtrack::detections {
+namespace {
+
+std::vector<std::string> fields(const std::string& line, bool commas) {
+  std::vector<std::string> f;
+  if (commas) {
+    std::string s;
+    std::istringstream is(line);
+    while (std::getline(is, s, ',')) f.push_back(trim(s));
+    if (!line.empty() && line.back() == ',') f.emplace_back();
+  } else {
+    std::istringstream is(line);
+    std::string s;
+    while (is >> s) f.push_back(s);
+  }
+  return f;
+}
+
+double number(const std::string& s, const std::string& where, const char* what) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end == s.c_str() || *end || !std::isfinite(v))
+    throw DataError(where + ": " + what + " '" + s + "' is not a finite number");
+  return v;
+}
+
+long frameNumber(const std::string& s, const std::string& where) {
+  const double v = number(s, where, "frame");
+  if (v < 0 || v != std::floor(v) || v > 1e9)
+    throw DataError(where + ": frame '" + s + "' is not a frame number (0, 1, 2, ...)");
+  return long(v);
+}
+
+std::string className(const std::string& type) {
+  if (type == "1") return "Pedestrian";
+  if (type == "2") return "Car";
+  if (type == "3") return "Cyclist";
+  return type;
+}
+
+}  // namespace
+
+std::map<long, std::vector<KittiDetection>> readKittiDetections(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw DataError(path + ": cannot open");
+  std::map<long, std::vector<KittiDetection>> out;
+  std::string line;
+  for (long n = 1; std::getline(f, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty()) continue;
+    const std::string where = path + ": line " + std::to_string(n);
+    const bool commas = line.find(',') != std::string::npos;
+    const auto v = fields(line, commas);
+    KittiDetection d;
+    std::size_t box_at = 0;  // where h w l x y z rotation_y start
+    long frame = 0;
+    if (commas) {
+      if (v.size() != 15)
+        throw DataError(where +
+                        ": expected 15 comma-separated values (frame,type,x1,y1,x2,y2,"
+                        "score,h,w,l,x,y,z,rotation_y,alpha), got " +
+                        std::to_string(v.size()));
+      frame = frameNumber(v[0], where);
+      d.type = className(v[1]);
+      d.score = number(v[6], where, "score");
+      box_at = 7;
+    } else {
+      if (v.size() != 17 && v.size() != 18)
+        throw DataError(where +
+                        ": expected 17 or 18 values (frame track_id type truncated "
+                        "occluded alpha x1 y1 x2 y2 h w l x y z rotation_y [score]), got " +
+                        std::to_string(v.size()));
+      frame = frameNumber(v[0], where);
+      d.type = v[2];
+      if (v.size() == 18) d.score = number(v[17], where, "score");
+      box_at = 10;
+    }
+    if (d.type == "DontCare") continue;
+    KittiCameraBox& b = d.box;
+    b.h = number(v[box_at], where, "h");
+    b.w = number(v[box_at + 1], where, "w");
+    b.l = number(v[box_at + 2], where, "l");
+    b.x = number(v[box_at + 3], where, "x");
+    b.y = number(v[box_at + 4], where, "y");
+    b.z = number(v[box_at + 5], where, "z");
+    b.ry = number(v[box_at + 6], where, "rotation_y");
+    if (!(b.h > 0 && b.w > 0 && b.l > 0 && b.h < 100 && b.w < 100 && b.l < 100))
+      throw DataError(where + ": box size h w l must lie in (0, 100) m");
+    out[frame].push_back(d);
+  }
+  return out;
+}
+
+std::map<long, CsvFrame> readDetectionsCsv(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw DataError(path + ": cannot open");
+  std::string line;
+  if (!std::getline(f, line)) throw DataError(path + ": empty (no header line)");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  const auto header = fields(line, true);
+  const auto col = [&](const char* name) -> int {
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name) return int(i);
+    return -1;
+  };
+  const int t = col("t"), fr = col("frame"), x = col("x"), y = col("y"), score = col("score"),
+            yaw = col("yaw"), alpha = col("alpha"), beta = col("beta"), z = col("z"), h = col("h"),
+            w = col("w"), l = col("l");
+  for (const auto& [c, name] :
+       {std::pair{t, "t"}, {fr, "frame"}, {x, "x"}, {y, "y"}, {score, "score"}})
+    if (c < 0) throw DataError(path + ": line 1: no column '" + name + "' (not a detections.csv)");
+  std::map<long, CsvFrame> out;
+  for (long n = 2; std::getline(f, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty()) continue;
+    const std::string where = path + ": line " + std::to_string(n);
+    const auto v = fields(line, true);
+    if (v.size() != header.size())
+      throw DataError(where + ": " + std::to_string(v.size()) + " values for " +
+                      std::to_string(header.size()) + " columns");
+    const auto get = [&](int c, const char* name, double fallback) {
+      return c < 0 || v[std::size_t(c)].empty() ? fallback : number(v[std::size_t(c)], where, name);
+    };
+    Detection d;
+    d.x = number(v[std::size_t(x)], where, "x");
+    d.y = number(v[std::size_t(y)], where, "y");
+    d.score = number(v[std::size_t(score)], where, "score");
+    d.yaw = get(yaw, "yaw", 0);
+    d.alpha = get(alpha, "alpha", 0);
+    d.beta = get(beta, "beta", 0);
+    d.box.z = get(z, "z", 0);
+    d.box.h = get(h, "h", 0);
+    d.box.w = get(w, "w", 0);
+    d.box.l = get(l, "l", 0);
+    CsvFrame& frame = out[frameNumber(v[std::size_t(fr)], where)];
+    frame.t = number(v[std::size_t(t)], where, "t");
+    frame.detections.push_back(d);
+  }
+  return out;
+}
+
+}  // namespace pedtrack::detections
