@@ -97,6 +97,7 @@ void validate(RenderArgs& a) {
   requireFile("detections", a.detections);
   if (!a.kitti.empty() && !fs::is_directory(fs::path(a.kitti) / "label_2"))
     bad("--kitti '" + a.kitti + "': no label_2/ folder (a KITTI object benchmark folder)");
+  if (!a.calib.empty() && a.kitti_labels.empty()) bad("--calib goes with --kitti-labels");
   if (!a.kitti_labels.empty()) {
     requireFile("kitti-labels", a.kitti_labels);
     // KITTI's layout: label_02/SSSS.txt beside calib/SSSS.txt.

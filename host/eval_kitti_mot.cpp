@@ -66,7 +66,9 @@ std::string jsonOf(const eval::KittiMotResult& r) {
     << ", \"recall\": " << num(b.recall()) << ", \"precision\": " << num(b.precision())
     << ", \"trajectories\": " << b.trajectories << ", \"mostly_tracked\": " << b.mostly_tracked
     << ", \"mostly_lost\": " << b.mostly_lost << ", \"score_threshold\": " << num(r.threshold)
-    << ", \"recall_levels\": " << r.levels << "}";
+    << ", \"recall_levels\": " << r.levels << ", \"hota\": " << num(r.hota.hota())
+    << ", \"deta\": " << num(r.hota.detA()) << ", \"assa\": " << num(r.hota.assA())
+    << ", \"loca\": " << num(r.hota.locA()) << "}";
   return o.str();
 }
 
@@ -77,9 +79,10 @@ std::string pct(double v) {
 std::string row(const std::string& name, const eval::KittiMotResult& r) {
   const auto& b = r.best;
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%-8s %7s %7s %7s %7s %5ld %5ld %6ld %6ld %6ld %7s\n",
+  std::snprintf(buf, sizeof buf, "%-8s %7s %7s %7s %7s %5ld %5ld %6ld %6ld %6ld %7s %6s\n",
                 name.c_str(), pct(r.samota).c_str(), pct(r.amota).c_str(), pct(b.mota()).c_str(),
-                pct(b.motp()).c_str(), b.ids, b.frag, b.fp, b.fn, b.n_gt, pct(b.recall()).c_str());
+                pct(b.motp()).c_str(), b.ids, b.frag, b.fp, b.fn, b.n_gt, pct(b.recall()).c_str(),
+                pct(r.hota.hota()).c_str());
   return buf;
 }
 
@@ -110,6 +113,9 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
                     opts, {}, args, vm, "eval --calib"))
     return exit_code::kOk;
   if (!(a.iou > 0 && a.iou <= 1)) throw ConfigError("pedtrack eval: --iou must lie in (0, 1]");
+  if (vm.count("distance") && !vm["iou"].defaulted())
+    throw ConfigError(
+        "pedtrack eval: --iou and --distance: give one (matching by IoU or by distance)");
   if (vm.count("distance") && !(a.distance > 0))
     throw ConfigError("pedtrack eval: --distance must be a positive number of metres");
   if (a.object_class != "pedestrian" && a.object_class != "car")
@@ -124,6 +130,13 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
   // The sequences: the one label file, or every label file that has results.
   std::vector<std::pair<std::string, std::string>> labels;  // name, path
   const bool single = fs::is_regular_file(a.truth);
+  if (!single && fs::is_regular_file(a.tracks))
+    throw ConfigError("pedtrack eval: --tracks " + a.tracks +
+                      " is one sequence's results: give its label file as --truth, or a folder "
+                      "of runs for the label folder");
+  if (!single && !a.calib.empty() && !fs::is_directory(a.calib))
+    throw ConfigError("pedtrack eval: --calib " + a.calib +
+                      " is one file: a label folder needs the calib folder");
   if (single) {
     labels.push_back({fs::path(a.truth).stem().string(), a.truth});
   } else {
@@ -137,11 +150,15 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
   o.min_iou = a.iou;
   o.max_distance = a.distance;
   std::vector<eval::KittiSequence> seqs;
+  std::vector<std::string> without, names;
   for (const auto& [name, path] : labels) {
     const std::string results = resultsOf(a.tracks, name, single);
-    if (results.empty()) continue;
+    if (results.empty()) {
+      without.push_back(name);
+      continue;
+    }
     eval::KittiSequence s;
-    s.name = name;
+    s.name = results;
     s.truth = eval::readKittiTrackFile(path);
     s.tracks = eval::readKittiTrackFile(results);
     const std::string calib = a.calib.empty() ? ""
@@ -152,10 +169,18 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
       throw ConfigError("pedtrack eval: --calib: no " + calib + " for sequence " + name);
     projectMissingBoxes(s.tracks, calib);
     seqs.push_back(std::move(s));
+    names.push_back(name);
   }
   if (seqs.empty())
     throw ConfigError("pedtrack eval: --tracks " + a.tracks + ": no results for any sequence of " +
                       a.truth + " (looked for NAME/kitti_tracks.txt and NAME.txt)");
+  // A run that failed must not vanish from the pooled figures unnoticed.
+  if (!without.empty()) {
+    std::string list;
+    for (const auto& n : without) list += (list.empty() ? "" : " ") + n;
+    std::cerr << "note: no results for " << without.size() << " of " << labels.size()
+              << " labelled sequences, not scored: " << list << "\n";
+  }
   std::vector<eval::KittiMotResult> per;
   for (const auto& s : seqs) per.push_back(eval::evaluateKittiMot({s}, o));
   const eval::KittiMotResult pooled = eval::evaluateKittiMot(seqs, o);
@@ -165,18 +190,18 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
               << "\", \"threshold\": " << (a.distance > 0 ? a.distance : a.iou)
               << ", \"sequences\": {";
     for (std::size_t i = 0; i < seqs.size(); ++i)
-      std::cout << (i ? ", " : "") << "\"" << jsonEscape(seqs[i].name) << "\": " << jsonOf(per[i]);
+      std::cout << (i ? ", " : "") << "\"" << jsonEscape(names[i]) << "\": " << jsonOf(per[i]);
     std::cout << "}, \"pooled\": " << jsonOf(pooled) << "}\n";
     return exit_code::kOk;
   }
-  std::cout
-      << "KITTI tracking, " << a.object_class << ", "
-      << (a.distance > 0 ? "bird's-eye centre distance <= " + num(a.distance, 2) + " m"
-                         : "3D IoU >= " + num(a.iou, 2))
-      << " (AB3DMOT's rules; MOTA, MOTP, IDS, FRAG, FP, FN at the score threshold of the "
-         "best MOTA)\n"
-      << "sequence  sAMOTA   AMOTA    MOTA    MOTP   IDS  FRAG     FP     FN  truths  recall\n";
-  for (std::size_t i = 0; i < seqs.size(); ++i) std::cout << row(seqs[i].name, per[i]);
+  std::cout << "KITTI tracking, " << a.object_class << ", "
+            << (a.distance > 0 ? "bird's-eye centre distance <= " + num(a.distance, 2) + " m"
+                               : "3D IoU >= " + num(a.iou, 2))
+            << " (AB3DMOT's rules; MOTA, MOTP, IDS, FRAG, FP, FN at the score threshold of the "
+               "best MOTA)\n"
+            << "sequence  sAMOTA   AMOTA    MOTA    MOTP   IDS  FRAG     FP     FN  truths  recall "
+               "  HOTA\n";
+  for (std::size_t i = 0; i < seqs.size(); ++i) std::cout << row(names[i], per[i]);
   if (seqs.size() > 1) std::cout << row("pooled", pooled);
   return exit_code::kOk;
 }

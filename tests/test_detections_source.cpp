@@ -111,14 +111,21 @@ TEST_CASE("a detections.csv replays its frames", "[detections]") {
   writeFile(dir + "/d.csv",
             "t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster,z,h,w,l\n"
             "5.0,0,1,2,1,2,0.9,,,,,,,,\n5.1,1,1.1,2,1.1,2,0.8,0.3,,,,0.1,1.7,0.6,0.8\n"
-            "5.1,1,4,4,4,4,0.2,,,,,,,,\n");
+            "5.1,1,4,4,4,4,0.2,,,,,,,,\n5.4,4,1,1,1,1,0.5,,,,,,,,\n");
   const auto frames = readAllFrames(pipeline(dir + "/d.csv"));
-  REQUIRE(frames.size() == 2);
+  // Frames 2 and 3 had no detections (no rows): they come back empty, 0.1 s apart.
+  REQUIRE(frames.size() == 5);
+  CHECK(frames[2].detections.empty());
+  CHECK(frames[3].t == Approx(5.3));
+  CHECK(frames[4].detections.size() == 1);
   CHECK(frames[0].t == Approx(5.0));
   REQUIRE(frames[1].detections.size() == 2);
   CHECK(frames[1].detections[0].x == Approx(1.1));
   CHECK(frames[1].detections[0].box.h == Approx(1.7));
   CHECK_FALSE(frames[0].detections[0].box.known());
+  writeFile(dir + "/tracks.csv", "t,frame,track,x,y,score\n5.0,0,1,1,2,0.5\n");
+  CHECK_THROWS_WITH(readAllFrames(pipeline(dir + "/tracks.csv")),
+                    Catch::Contains("tracks.csv: line 1: a 'track' column"));
   writeFile(dir + "/bad.csv", "t,frame,x,y,score\n5.0,0,1,2\n");
   CHECK_THROWS_WITH(readAllFrames(pipeline(dir + "/bad.csv")),
                     Catch::Contains("bad.csv: line 2: 4 values for 5 columns"));
@@ -155,6 +162,21 @@ TEST_CASE("tracks behind KITTI detections come back as kitti_tracks.txt and scor
   CHECK(jsonValue(ev.output, "false_positives") == 0);
   CHECK(jsonValue(ev.output, "true_positives") == double(rows.size()));
   CHECK(jsonValue(ev.output, "motp") > 0.8);
+  CHECK(jsonValue(ev.output, "hota") > 0.5);
+  // One matching rule, one sequence's results for one label file.
+  const auto both = runHost({"eval", "--truth", dir + "/labels.txt", "--tracks",
+                             dir + "/run/kitti_tracks.txt", "--iou", "0.5", "--distance", "1"});
+  CHECK(both.exit_code == 2);
+  CHECK_THAT(both.output, Catch::Contains("--iou and --distance"));
+  const auto folder = runHost({"eval", "--truth", dir, "--tracks", dir + "/run/kitti_tracks.txt"});
+  CHECK(folder.exit_code == 2);
+  CHECK_THAT(folder.output, Catch::Contains("one sequence's results"));
+  // imm_pdaf reading scores as probabilities refuses a raw score of 5, frame by frame.
+  const auto raw = runHost({"run", ini, "--input", dir + "/0001.txt", "--set",
+                            "source.calib=" + dir + "/calib.txt", "--set", "track.score_prior=0.2",
+                            "--out", dir + "/raw"});
+  CHECK_THAT(raw.output, Catch::Contains("detection score 5.000000 is no probability"));
+  CHECK(jsonValue(readFile(dir + "/raw/run.json"), "frames_failed") == 20);
 }
 
 TEST_CASE("imm_pdaf behind PointRCNN on KITTI sequence 0017", "[detections][data]") {
@@ -169,7 +191,7 @@ TEST_CASE("imm_pdaf behind PointRCNN on KITTI sequence 0017", "[detections][data
   const auto ev = runHost({"eval", "--truth", data + "/label_02", "--calib", data + "/calib",
                            "--tracks", out, "--json"});
   REQUIRE(ev.exit_code == 0);
-  // Measured: sAMOTA 0.894, MOTA 0.862 (BENCHMARKS.md, "KITTI tracking").
+  // Measured: sAMOTA 0.892, MOTA 0.839 (BENCHMARKS.md, "KITTI tracking by detection").
   CHECK(jsonValue(ev.output, "samota") > 0.85);
   CHECK(jsonValue(ev.output, "mota") > 0.8);
 }

@@ -56,6 +56,15 @@ TEST_CASE("KITTI boxes: corners, image box, alpha and 3D IoU", "[kitti_mot]") {
   CHECK(xyxy[1] == Approx(180 - 0.5 * 700 / 9.5));
   CHECK(xyxy[3] == Approx(180 + 1.5 * 700 / 9.5));
   CHECK_FALSE(kittiImageBox(cal, box(0, -5), xyxy));
+  CHECK_FALSE(kittiImageBox(cal, box(30, 5), xyxy));  // wholly right of the 1,242 px image
+  // Footprints overlapping 1 x 0.5 m diagonally: 1 m^3 of 4 + 4 - 1. Touching edges: nothing.
+  CHECK(kittiIou3d(box(0, 10), box(1, 10.5)) == Approx(1.0 / 7).epsilon(1e-9));
+  CHECK(kittiIou3d(box(0, 10), box(2, 10)) == Approx(0).margin(1e-12));
+  // A box turned 45 degrees inside a bigger one's footprint: IoU = its volume / the big one's.
+  KittiCameraBox big = box(0, 10);
+  big.l = 4, big.w = 4;
+  KittiCameraBox turned = box(0, 10, 1.5, M_PI / 4);
+  CHECK(kittiIou3d(big, turned) == Approx(2.0 / 16).epsilon(1e-9));
 }
 
 TEST_CASE("a tiny KITTI sequence scored by hand", "[kitti_mot]") {

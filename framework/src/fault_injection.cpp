@@ -138,6 +138,7 @@ class FaultInjector : public Sensor {
   std::size_t entriesSkipped() const override { return inner_->entriesSkipped(); }
   bool live() const override { return inner_->live(); }
   void results(const Frame& f) override { inner_->results(f); }
+  bool detectionsOnly() const override { return inner_->detectionsOnly(); }
 
   std::vector<std::pair<std::string, long>> counters() const override {
     auto c = inner_->counters();

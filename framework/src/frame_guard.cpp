@@ -72,8 +72,7 @@ bool FrameGuard::admit(Frame& f) {
   last_t_ = f.t;
   last_pose_ = f.robot_pose;
   // A source of detections (a detector's output replayed) has no range data, by design.
-  if (f.observations.empty() && !f.detections.empty()) detections_source_ = true;
-  if (clean(f) == 0 && !(detections_source_ && f.observations.empty()))
+  if (clean(f) == 0 && !(detections_only_ && f.observations.empty()))
     count(kEmptyFrames, f, 1, "no range data in the frame");
   return true;
 }

@@ -110,10 +110,9 @@ bool kittiImageBox(const KittiCalib& c, const KittiCameraBox& b, std::array<doub
     const double u = uvw.x() / uvw.z(), v = uvw.y() / uvw.z();
     x1 = std::min(x1, u), y1 = std::min(y1, v), x2 = std::max(x2, u), y2 = std::max(y2, v);
   }
-  const double W = 2 * c.P2(0, 2), H = 2 * c.P2(1, 2);
-  xyxy = {std::clamp(x1, 0.0, W), std::clamp(y1, 0.0, H), std::clamp(x2, 0.0, W),
-          std::clamp(y2, 0.0, H)};
-  return true;
+  xyxy = {std::clamp(x1, 0.0, c.image_width), std::clamp(y1, 0.0, c.image_height),
+          std::clamp(x2, 0.0, c.image_width), std::clamp(y2, 0.0, c.image_height)};
+  return xyxy[2] > xyxy[0] && xyxy[3] > xyxy[1];  // empty: wholly beside the image
 }
 
 double kittiAlpha(const KittiCameraBox& b) {

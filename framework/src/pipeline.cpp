@@ -117,6 +117,7 @@ RunSummary Pipeline::run(const RunOptions& opt) {
   Frame frame;
   Clock::time_point arrival;
   FrameGuard guard;
+  if (source_->detectionsOnly()) guard.expectDetectionsOnly();
   std::vector<PlanarPoint> people;
   while (!stopRequested()) {
     const auto t0 = Clock::now();

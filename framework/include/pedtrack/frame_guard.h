@@ -30,6 +30,9 @@ class FrameGuard {
   static constexpr double kGapFactor = 1.8;
 
   explicit FrameGuard(bool warn = true) : warn_(warn) {}
+  /// The source hands over detections, not range data (Sensor::detectionsOnly): frames without
+  /// observations are no fault.
+  void expectDetectionsOnly() { detections_only_ = true; }
 
   /// Cleans `frame`'s range data; false when the frame must be skipped.
   bool admit(Frame& frame);
@@ -39,8 +42,7 @@ class FrameGuard {
   long total() const;
 
  private:
-  // The source hands over detections, not range data: a frame without observations is usual.
-  bool detections_source_ = false;
+  bool detections_only_ = false;
   enum Kind {
     kBadTime,
     kTimeRepeat,

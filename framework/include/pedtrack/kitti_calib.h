@@ -16,6 +16,8 @@ struct KittiCalib {
   Eigen::Matrix<double, 3, 4> P2 = Eigen::Matrix<double, 3, 4>::Zero();
   Eigen::Matrix3d R0 = Eigen::Matrix3d::Identity();
   Eigen::Matrix<double, 3, 4> velo_to_cam = Eigen::Matrix<double, 3, 4>::Zero();
+  /// The colour images' size (px): KITTI's are 1,242 × 375 (a few drives 1,224–1,241 wide).
+  double image_width = 1242, image_height = 375;
 
   /// A point of the rectified camera frame (x right, y down, z forward) in the Velodyne frame.
   Eigen::Vector3d veloFromRect(const Eigen::Vector3d& rect) const;
@@ -39,8 +41,8 @@ struct KittiCameraBox {
 /// front-left, front-right, back-right, back-left of the box's own (l, w) axes.
 std::array<Eigen::Vector3d, 8> kittiCorners(const KittiCameraBox& b);
 
-/// The box's image rectangle (x1, y1, x2, y2, pixels) through P2, clipped to the image (its size
-/// taken as twice P2's principal point). False when a corner is behind the camera (z ≤ 0.1 m).
+/// The box's image rectangle (x1, y1, x2, y2, pixels) through P2, clipped to the image. False
+/// when a corner is behind the camera (z ≤ 0.1 m) or the box lies wholly beside the image.
 bool kittiImageBox(const KittiCalib& c, const KittiCameraBox& b, std::array<double, 4>& xyxy);
 
 /// KITTI's observation angle: rotation_y minus the bearing of the box centre, in (−π, π].

@@ -57,6 +57,9 @@ class Sensor : public Plugin {
   /// kitti_tracks.txt, in the frame its labels use). Throwing fails the run after its outputs
   /// are closed.
   virtual void results(const Frame& frame) { (void)frame; }
+  /// The source hands over a detector's output (Frame::detections), no range data: a frame
+  /// without observations is then no fault.
+  virtual bool detectionsOnly() const { return false; }
 };
 
 /// A processing stage: odometry sets the robot's pose, segmenters add clusters, classifiers

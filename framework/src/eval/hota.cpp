@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include "pedtrack/assignment.h"
 
@@ -64,19 +65,31 @@ double HotaResult::assPr() const {
 }
 
 HotaResult hota(const std::vector<EvalFrame>& frames, double tau) {
+  std::vector<HotaFrame> hf(frames.size());
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    for (const Object& t : frames[k].truths) hf[k].truths.push_back(t.id);
+    for (const Object& e : frames[k].estimates) hf[k].tracks.push_back(e.id);
+    for (const Object& t : frames[k].truths)
+      for (const Object& e : frames[k].estimates)
+        hf[k].similarity.push_back(std::max(0.0, 1.0 - distance(t, e) / tau));
+  }
+  return hota(hf);
+}
+
+HotaResult hota(const std::vector<HotaFrame>& frames) {
   std::map<long, int> truth_ix, track_ix;
-  for (const EvalFrame& f : frames) {
-    for (const Object& t : f.truths) truth_ix.emplace(t.id, int(truth_ix.size()));
-    for (const Object& e : f.estimates) track_ix.emplace(e.id, int(track_ix.size()));
+  for (const HotaFrame& f : frames) {
+    for (long id : f.truths) truth_ix.emplace(id, int(truth_ix.size()));
+    for (long id : f.tracks) track_ix.emplace(id, int(track_ix.size()));
   }
   const int g = int(truth_ix.size()), n = int(track_ix.size());
   std::vector<FrameIds> fr(frames.size());
   for (std::size_t k = 0; k < frames.size(); ++k) {
-    for (const Object& t : frames[k].truths) fr[k].truth.push_back(truth_ix[t.id]);
-    for (const Object& e : frames[k].estimates) fr[k].track.push_back(track_ix[e.id]);
-    for (const Object& t : frames[k].truths)
-      for (const Object& e : frames[k].estimates)
-        fr[k].sim.push_back(std::max(0.0, 1.0 - distance(t, e) / tau));
+    for (long id : frames[k].truths) fr[k].truth.push_back(truth_ix[id]);
+    for (long id : frames[k].tracks) fr[k].track.push_back(track_ix[id]);
+    fr[k].sim = frames[k].similarity;
+    if (fr[k].sim.size() != fr[k].truth.size() * fr[k].track.size())
+      throw std::invalid_argument("hota: a frame's similarity is not truths x tracks");
   }
 
   // Global alignment score: soft co-occurrence of each id pair over the whole run.

@@ -62,7 +62,7 @@ Prepared prepare(const KittiSequence& s, const KittiMotOptions& o) {
     if (!kept(r.type) || r.type == "dontcare" || r.id == -1) continue;
     if (!seen.insert({r.frame, r.id}).second)
       throw DataError(s.name + ": frame " + std::to_string(r.frame) + " has track " +
-                      std::to_string(r.id) + " twice");
+                      std::to_string(r.id) + " twice (a results file has one line per track)");
     auto& [sum, count] = sums[r.id];
     sum += r.score, ++count;  // frames past the labels count too (as KITTI's tool does)
     if (r.frame < 0 || r.frame >= p.frames) continue;
@@ -144,7 +144,7 @@ KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<c
       c.fp += m - matched - ignored_trk;
       c.n_gt += n - ignored_fn - ignored_tp;
     }
-    // Per labelled trajectory, over its appearances (KITTI's rules, docs/evaluation.md).
+    // Per labelled trajectory, over its appearances (KITTI's rules, docs/pipelines.md).
     for (const long id : p.truth_ids) {
       ++c.trajectories;
       const auto it = traj.find(id);
@@ -181,6 +181,54 @@ KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<c
     }
   }
   return c;
+}
+
+// One sequence's frames for HOTA: every track, the ignored labels and what they or the ignore
+// rules account for left out (TrackEval's KITTI preprocessing, with this evaluation's rules).
+std::vector<HotaFrame> hotaFrames(const Prepared& p, const KittiMotOptions& o) {
+  const std::string near = neighbourOf(o.object_class);
+  const bool by_distance = o.max_distance > 0;
+  std::vector<HotaFrame> out(std::size_t(std::max(0L, p.frames)));
+  for (std::size_t f = 0; f < out.size(); ++f) {
+    const auto &G = p.truth[f], &T = p.tracks[f];
+    const int n = int(G.size()), m = int(T.size());
+    std::vector<double> cost(std::size_t(n * m)), sim(std::size_t(n * m));
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < m; ++j) {
+        const auto &a = G[std::size_t(i)]->box, &b = T[std::size_t(j)]->box;
+        const std::size_t k = std::size_t(i * m + j);
+        const double d = std::hypot(a.x - b.x, a.z - b.z);
+        sim[k] = by_distance ? std::max(0.0, 1 - d / o.max_distance) : kittiIou3d(a, b);
+        cost[k] = by_distance ? d : 1 - sim[k];
+      }
+    const Assignment as =
+        n && m ? solveAssignment(cost, n, m, by_distance ? o.max_distance : 1 - o.min_iou)
+               : Assignment{};
+    const auto ignoredTruth = [&](const KittiTrackRow& g) {
+      return g.occluded > o.max_occlusion || g.truncated > o.max_truncation ||
+             (!near.empty() && g.type == near);
+    };
+    std::vector<int> kept_truth, kept_track;
+    for (int i = 0; i < n; ++i)
+      if (!ignoredTruth(*G[std::size_t(i)])) kept_truth.push_back(i);
+    for (int j = 0; j < m; ++j) {
+      const int i = as.col_to_row.empty() ? -1 : as.col_to_row[std::size_t(j)];
+      if (i >= 0) {
+        if (!ignoredTruth(*G[std::size_t(i)])) kept_track.push_back(j);
+        continue;
+      }
+      const KittiTrackRow& t = *T[std::size_t(j)];
+      bool ignore = (!near.empty() && t.type == near) || std::abs(t.y2 - t.y1) <= o.min_height;
+      for (const KittiTrackRow* d : p.dontcare[f]) ignore = ignore || overlapShare(t, *d) > 0.5;
+      if (!ignore) kept_track.push_back(j);
+    }
+    HotaFrame& h = out[f];
+    for (int i : kept_truth) h.truths.push_back(G[std::size_t(i)]->id);
+    for (int j : kept_track) h.tracks.push_back(T[std::size_t(j)]->id);
+    for (int i : kept_truth)
+      for (int j : kept_track) h.similarity.push_back(sim[std::size_t(i * m + j)]);
+  }
+  return out;
 }
 
 }  // namespace
@@ -239,6 +287,9 @@ KittiMotResult evaluateKittiMot(std::vector<KittiSequence> sequences, const Kitt
   res.samota /= kLevels, res.amota /= kLevels, res.amotp /= kLevels;
   res.levels = int(levels.size());
   res.best = pass(seqs, ever, res.threshold, o, nullptr);
+  std::vector<HotaResult> per_sequence;
+  for (const Prepared& p : seqs) per_sequence.push_back(hota(hotaFrames(p, o)));
+  if (!per_sequence.empty()) res.hota = combineHota(per_sequence);
   return res;
 }
 
@@ -267,6 +318,10 @@ std::vector<KittiTrackRow> readKittiTrackFile(const std::string& path) {
         throw DataError(where + ": value " + std::to_string(i + 1) + " '" + v[i] +
                         "' is not a number");
     }
+    if (d[0] < 0 || d[0] > 1e7 || d[0] != std::floor(d[0]))
+      throw DataError(where + ": frame '" + v[0] + "' is not a frame number (0 ... 10,000,000)");
+    if (d[1] < -1 || d[1] > 1e12 || d[1] != std::floor(d[1]))
+      throw DataError(where + ": track id '" + v[1] + "' is not an id (-1 or a whole number)");
     KittiTrackRow r;
     r.frame = long(d[0]), r.id = long(d[1]), r.type = lower(v[2]);
     r.truncated = int(d[3]), r.occluded = int(d[4]);

@@ -119,6 +119,8 @@ std::map<long, CsvFrame> readDetectionsCsv(const std::string& path) {
   for (const auto& [c, name] :
        {std::pair{t, "t"}, {fr, "frame"}, {x, "x"}, {y, "y"}, {score, "score"}})
     if (c < 0) throw DataError(path + ": line 1: no column '" + name + "' (not a detections.csv)");
+  if (col("track") >= 0)
+    throw DataError(path + ": line 1: a 'track' column: a tracks.csv, not a detections.csv");
   std::map<long, CsvFrame> out;
   for (long n = 2; std::getline(f, line); ++n) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -146,7 +148,18 @@ std::map<long, CsvFrame> readDetectionsCsv(const std::string& path) {
     frame.t = number(v[std::size_t(t)], where, "t");
     frame.detections.push_back(d);
   }
-  return out;
+  // detections.csv has no rows for a frame without detections, but a tracker must see it (a
+  // miss): the numbers between two frames come back empty, their times interpolated.
+  std::map<long, CsvFrame> filled;
+  for (auto it = out.begin(); it != out.end(); ++it) {
+    filled[it->first] = it->second;
+    const auto next = std::next(it);
+    if (next == out.end()) break;
+    const double step = (next->second.t - it->second.t) / double(next->first - it->first);
+    for (long k = it->first + 1; k < next->first; ++k)
+      filled[k].t = it->second.t + step * double(k - it->first);
+  }
+  return filled;
 }
 
 }  // namespace pedtrack::detections

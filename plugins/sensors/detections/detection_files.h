@@ -32,7 +32,9 @@ struct CsvFrame {
 };
 
 /// pedtrack's detections.csv (docs/outputs.md), by its `frame` column; the box columns z,h,w,l
-/// are read when present. Throws DataError naming the file and line at fault.
+/// are read when present. Frame numbers missing between two present ones (frames without
+/// detections) come back empty, their times interpolated. Throws DataError naming the file and
+/// line at fault (a tracks.csv is refused).
 std::map<long, CsvFrame> readDetectionsCsv(const std::string& path);
 
 }  // namespace pedtrack::detections

@@ -107,6 +107,8 @@ class DetectionsSource : public Sensor {
   }
 
   void start(const std::string& out_dir) override {
+    // An earlier run's kitti_tracks.txt would be read as this run's.
+    if (csv_ && !out_dir.empty()) fs::remove(fs::path(out_dir) / "kitti_tracks.txt");
     if (!csv_ && !out_dir.empty())
       writer_ = std::make_unique<KittiTracksWriter>(out_dir + "/kitti_tracks.txt", calib_,
                                                     p_.mount_z, resultClass());
@@ -122,6 +124,8 @@ class DetectionsSource : public Sensor {
     return more;
   }
 
+  bool detectionsOnly() const override { return true; }
+
   void results(const Frame& f) override {
     if (writer_) writer_->write(std::lround(f.t * p_.scan_rate), f);
   }
@@ -133,7 +137,7 @@ class DetectionsSource : public Sensor {
 
   std::vector<std::pair<std::string, long>> counters() const override {
     if (!writer_) return {};
-    return {{"tracks_behind_camera", long(writer_->behindCamera())}};
+    return {{"tracks_out_of_view_camera", long(writer_->outOfView())}};
   }
 
  private:

@@ -30,7 +30,7 @@ void KittiTracksWriter::write(long kitti_frame, const Frame& f) {
     b.ry = rotationYFromVeloYaw(tr.yaw - f.robot_pose.yaw());
     std::array<double, 4> img{};
     if (!std::isfinite(b.x + b.y + b.z + b.ry + tr.score) || !kittiImageBox(calib_, b, img)) {
-      ++behind_;
+      ++out_of_view_;
       continue;
     }
     const int n = std::snprintf(

@@ -19,11 +19,12 @@ class KittiTracksWriter {
   /// `mount_z`: the Velodyne above the robot frame's origin (the road); `type`: the class written.
   KittiTracksWriter(const std::string& path, const KittiCalib& calib, double mount_z,
                     std::string type);
-  /// One line per track of `f` in front of the camera: `frame track_id type 0 0 alpha x1 y1 x2 y2
-  /// h w l x y z rotation_y score` (camera frame; the image box is the 3D box projected by P2).
+  /// One line per track of `f` the camera sees (others are counted, outOfView()): `frame track_id
+  /// type 0 0 alpha x1 y1 x2 y2 h w l x y z rotation_y score` (camera frame; the image box is the
+  /// 3D box projected by P2).
   void write(long kitti_frame, const Frame& f);
   void close();
-  std::size_t behindCamera() const { return behind_; }
+  std::size_t outOfView() const { return out_of_view_; }
 
  private:
   std::ofstream out_;
@@ -32,7 +33,7 @@ class KittiTracksWriter {
   double mount_z_;
   std::string type_;
   DefaultBox default_;
-  std::size_t behind_ = 0;
+  std::size_t out_of_view_ = 0;
 };
 
 }  // namespace pedtrack::detections

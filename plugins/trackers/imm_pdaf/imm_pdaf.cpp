@@ -279,6 +279,10 @@ class ImmPdaf : public Tracker {
 
   static double clampProbability(double p) { return std::clamp(p, 1e-6, 1 - 1e-6); }
   double scoreRatio(double score) const {
+    if (!(score >= 0 && score <= 1))
+      throw DataError("detection score " + std::to_string(score) +
+                      " is no probability: score_prior reads scores as P(person) in [0, 1] "
+                      "(calibrate the detector's, e.g. with a score_logistic stage)");
     const double p = clampProbability(score), q = s_.score_prior;
     return (p / (1 - p)) / (q / (1 - q));
   }

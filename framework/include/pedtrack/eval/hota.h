@@ -37,6 +37,15 @@ struct HotaResult {
 /// HOTA of one run (all truths scored; remove unscored ones first, see withoutUnscored).
 HotaResult hota(const std::vector<EvalFrame>& frames, double tau);
 
+/// One frame with any similarity in [0, 1] (KITTI's: 3D IoU): the ids of its truths and tracks
+/// and their truth-major similarity matrix (truths × tracks).
+struct HotaFrame {
+  std::vector<long> truths, tracks;
+  std::vector<double> similarity;
+};
+/// HOTA over such frames; throws std::invalid_argument when a similarity matrix has the wrong size.
+HotaResult hota(const std::vector<HotaFrame>& frames);
+
 /// Several runs pooled as TrackEval pools sequences: TP/FN/FP summed, AssA/AssRe/AssPr/LocA
 /// averaged with the runs' TP counts as weights.
 HotaResult combineHota(const std::vector<HotaResult>& runs);

@@ -4,10 +4,12 @@
 // class (neighbouring classes, truncated / occluded labels, DontCare areas, boxes under 25 px),
 // CLEAR MOT counts, ID switches and fragmentations per labelled trajectory, and AB3DMOT's
 // sAMOTA, AMOTA and AMOTP over 40 recall levels (Weng et al., "3D Multi-Object Tracking: A
-// Baseline and New Evaluation Metrics", IROS 2020). docs/evaluation.md has the rules.
+// Baseline and New Evaluation Metrics", IROS 2020). docs/pipelines.md ("KITTI: tracking by
+// detection") has the rules.
 #include <string>
 #include <vector>
 
+#include "pedtrack/eval/hota.h"
 #include "pedtrack/eval/kitti_boxes.h"
 
 namespace pedtrack::eval {
@@ -27,7 +29,7 @@ struct KittiTrackRow {
 std::vector<KittiTrackRow> readKittiTrackFile(const std::string& path);
 
 struct KittiSequence {
-  std::string name;
+  std::string name;  ///< errors name it: the results file
   std::vector<KittiTrackRow> truth, tracks;
   long frames = 0;  ///< frames scored: 0..frames-1 (0: up to the last labelled frame)
 };
@@ -63,6 +65,10 @@ struct KittiMotResult {
   double threshold = -1e4;  ///< the track-score threshold of `best` (the highest MOTA)
   KittiMotCounts best;      ///< the pass reported as MOTA, MOTP, IDS, FRAG, FP, FN
   int levels = 0;           ///< recall levels sampled (at most 40)
+  /// HOTA (every track, no score threshold) with the 3D IoU (or 1 − distance / max_distance) as
+  /// the similarity, after TrackEval's KITTI preprocessing: ignored labels and the boxes matched
+  /// to them, and unmatched boxes too low or in a DontCare area, left out.
+  HotaResult hota;
 };
 
 /// Scores the sequences together (counts pooled) as AB3DMOT's evaluate.py does.

@@ -52,9 +52,9 @@ struct ObjectTable {
 /// Throws ConfigError on a missing file, missing required column or unparsable value.
 ObjectTable readObjectTable(const std::string& path);
 
-/// Reads detections.csv (header `t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster`): like
-/// readObjectTable, but the id column is optional; without one, a row's id is its position among
-/// the rows of its frame (consecutive rows with the same t).
+/// Reads detections.csv (header `t,frame,x,y,sensor_x,sensor_y,score,yaw,alpha,beta,cluster,...`):
+/// like readObjectTable, but the id column is optional; without one, a row's id is its position
+/// among the rows of its frame (consecutive rows with the same t).
 ObjectTable readDetectionTable(const std::string& path);
 
 /// Rows grouped by time: consecutive distinct `t` values (rows sorted by t first, stable).
