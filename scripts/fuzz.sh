@@ -21,7 +21,7 @@ cd "$root"
 
 # Seed corpora from real files: the shipped pipelines and scenarios, a model, the outputs and
 # a recording of a short run, VLP-16 packets and a Hokuyo session.
-mkdir -p "$work"/{pipeline_ini,scenario,csv,model,velodyne,rawlog,rosbag,scip}
+mkdir -p "$work"/{pipeline_ini,scenario,csv,model,velodyne,rawlog,rosbag,scip,kitti}
 cp configs/*.ini "$work/pipeline_ini/"
 cp configs/scenarios/*.ini "$work/scenario/"
 cp models/torso_svm.yml "$work/model/"
@@ -31,6 +31,14 @@ for f in tracks truth detections clusters; do
   [ -f "$work/run/$f.csv" ] && head -n 40 "$work/run/$f.csv" > "$work/csv/$f.csv"
 done
 python3 scripts/fuzz_seeds.py "$work"
+# KITTI: a tracking label file and the detector's lines of the shared data (when there), and the
+# kitti_tracks.txt and detection files the tests wrote.
+kitti_data=${PEDTRACK_DATA:-$root/../shared/data}/kitti_tracking
+for f in label_02/0017.txt pointrcnn_pedestrian/0017.txt; do
+  [ -f "$kitti_data/$f" ] && head -n 60 "$kitti_data/$f" > "$work/kitti/$(echo "$f" | tr / _)"
+done
+find "$build/Testing/work" \( -name 'kitti_tracks.txt' -o -name 'dets.txt' -o -name 'labels.txt' \) \
+  -size -64k -exec sh -c 'cp "$1" "$2/$(echo "$1" | md5sum | cut -c1-8).txt"' _ {} "$work/kitti" \; 2>/dev/null || true
 # ROS bags: the small ones test_rosbag writes with rosbag_storage (scans, /tf, odometry; the
 # test suite runs before this in scripts/check.sh). No bag writer ships for Python here.
 find "$build/Testing/work" -name '*.bag' -size -64k -exec cp {} "$work/rosbag/" \; 2>/dev/null || true
@@ -38,10 +46,10 @@ find "$build/Testing/work" -name '*.bag' -size -64k -exec cp {} "$work/rosbag/" 
 
 declare -A max_len=([fuzz_pipeline_ini]=16384 [fuzz_scenario]=16384 [fuzz_csv]=16384
   [fuzz_model]=131072 [fuzz_velodyne]=12060 [fuzz_rawlog]=65536 [fuzz_rosbag]=65536
-  [fuzz_scip]=16384)
+  [fuzz_scip]=16384 [fuzz_kitti]=16384)
 declare -A corpus=([fuzz_pipeline_ini]=pipeline_ini [fuzz_scenario]=scenario [fuzz_csv]=csv
   [fuzz_model]=model [fuzz_velodyne]=velodyne [fuzz_rawlog]=rawlog [fuzz_rosbag]=rosbag
-  [fuzz_scip]=scip)
+  [fuzz_scip]=scip [fuzz_kitti]=kitti)
 # Memory limits. MRPT's archive reader and rosbag_storage trust 32-bit length fields: a corrupt
 # string or record header makes them allocate (MRPT: and zero-fill) up to 4 GiB before the read
 # fails and the source reports the file as broken. That is a spike, not a crash, and it is in
@@ -53,7 +61,7 @@ declare -A limits=([fuzz_rawlog]="-malloc_limit_mb=4200 -rss_limit_mb=5632"
 status=0
 printf '%-18s %8s %10s %8s  %s\n' target seconds runs corpus result
 for target in fuzz_pipeline_ini fuzz_scenario fuzz_csv fuzz_model fuzz_velodyne fuzz_rawlog \
-  fuzz_rosbag fuzz_scip; do
+  fuzz_rosbag fuzz_scip fuzz_kitti; do
   [ -x "$bin/$target" ] || { printf '%-18s not built\n' "$target"; continue; }
   log=$work/$target.log
   start=$(date +%s)

@@ -318,8 +318,8 @@ std::vector<KittiTrackRow> readKittiTrackFile(const std::string& path) {
         throw DataError(where + ": value " + std::to_string(i + 1) + " '" + v[i] +
                         "' is not a number");
     }
-    if (d[0] < 0 || d[0] > 1e7 || d[0] != std::floor(d[0]))
-      throw DataError(where + ": frame '" + v[0] + "' is not a frame number (0 ... 10,000,000)");
+    if (d[0] < 0 || d[0] > 1e6 || d[0] != std::floor(d[0]))
+      throw DataError(where + ": frame '" + v[0] + "' is not a frame number (0 ... 1,000,000)");
     if (d[1] < -1 || d[1] > 1e12 || d[1] != std::floor(d[1]))
       throw DataError(where + ": track id '" + v[1] + "' is not an id (-1 or a whole number)");
     KittiTrackRow r;

@@ -36,8 +36,8 @@ double number(const std::string& s, const std::string& where, const char* what) 
 
 long frameNumber(const std::string& s, const std::string& where) {
   const double v = number(s, where, "frame");
-  if (v < 0 || v != std::floor(v) || v > 1e9)
-    throw DataError(where + ": frame '" + s + "' is not a frame number (0, 1, 2, ...)");
+  if (v < 0 || v != std::floor(v) || v > 1e6)
+    throw DataError(where + ": frame '" + s + "' is not a frame number (0 ... 1,000,000)");
   return long(v);
 }
 
@@ -156,6 +156,8 @@ std::map<long, CsvFrame> readDetectionsCsv(const std::string& path) {
     const auto next = std::next(it);
     if (next == out.end()) break;
     const double step = (next->second.t - it->second.t) / double(next->first - it->first);
+    // Beyond a minute at 100 Hz the gap is a break in the recording, not frames to replay.
+    if (next->first - it->first > 6000) continue;
     for (long k = it->first + 1; k < next->first; ++k)
       filled[k].t = it->second.t + step * double(k - it->first);
   }

@@ -54,7 +54,7 @@ const ParamTable<DetectionsParams>& table() {
           .real(&P::mount_z, "mount_z", "m", 0, 10,
                 "KITTI: the Velodyne above the road (1.73 m); the robot frame is on the road "
                 "under it")
-          .integer(&P::frames, "frames", "", 0, 1e9,
+          .integer(&P::frames, "frames", "", 0, 1e6,
                    "KITTI: frames in the sequence (frames after the last detection are empty); "
                    "0: up to the last frame with a detection")
           .text(&P::oxts, "oxts",
