@@ -11,6 +11,32 @@
 
 namespace pedtrack::rosbag_source {
 
+void poseArrayToFrame(const geometry_msgs::PoseArray& poses, const mrpt::poses::CPose3D& robot,
+                      const mrpt::poses::CPose3D& mount, bool robot_known, Frame& frame,
+                      long& skipped) {
+  frame.robot_pose = robot;
+  frame.has_odometry = robot_known;
+  frame.sensor_pose = robot + mount;
+  for (const auto& p : poses.poses) {
+    const auto& q = p.orientation;
+    const double x = p.position.x, y = p.position.y, z = p.position.z;
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z) ||
+        !std::isfinite(q.x + q.y + q.z + q.w)) {
+      ++skipped;
+      continue;
+    }
+    Detection d;
+    double fz = 0;
+    frame.sensor_pose.composePoint(x, y, z, d.x, d.y, fz);
+    // The quaternion's yaw, its scale cancelling (a zero one, no heading given, is yaw 0).
+    const double yaw =
+        std::atan2(2 * (q.w * q.z + q.x * q.y), q.w * q.w + q.x * q.x - q.y * q.y - q.z * q.z);
+    d.yaw = std::remainder(frame.sensor_pose.yaw() + yaw, 2 * M_PI);
+    d.score = 1;
+    frame.detections.push_back(d);
+  }
+}
+
 mrpt::obs::CObservation2DRangeScan::Ptr scanToObservation(const sensor_msgs::LaserScan& scan,
                                                           const mrpt::poses::CPose3D& mount) {
   // Written here rather than with mrpt::ros1bridge::fromROS (MRPT 2.5.8): MRPT's scan spans

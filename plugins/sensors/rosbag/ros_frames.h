@@ -1,6 +1,7 @@
 #pragma once
 // ROS1 range messages as MRPT observations, and a group of them (several scanners on one robot)
 // as one frame: the rules the bag source (`rosbag`) and the live source (`ros_topic`) share.
+#include <geometry_msgs/PoseArray.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/poses/CPose3D.h>
@@ -23,6 +24,14 @@ mrpt::obs::CObservation2DRangeScan::Ptr scanToObservation(const sensor_msgs::Las
 /// A PointCloud2 (x, y, z fields) as MRPT's point cloud observation; null without x, y, z.
 mrpt::obs::CObservationPointCloud::Ptr cloudToObservation(const sensor_msgs::PointCloud2& cloud,
                                                           const mrpt::poses::CPose3D& mount);
+
+/// A detector's geometry_msgs/PoseArray (people or legs in the sensor's frame) as a frame of
+/// detections: each pose placed in the fixed frame through the robot pose and the sensor's
+/// mount, its heading the quaternion's yaw, its score 1 (the message has none). Poses that are
+/// not finite are skipped and counted in `skipped`.
+void poseArrayToFrame(const geometry_msgs::PoseArray& poses, const mrpt::poses::CPose3D& robot,
+                      const mrpt::poses::CPose3D& mount, bool robot_known, Frame& frame,
+                      long& skipped);
 
 /// One converted message with the poses it was taken at.
 struct MountedObservation {

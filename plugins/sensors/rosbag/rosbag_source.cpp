@@ -1,6 +1,7 @@
 // `rosbag`: replays sensor_msgs/LaserScan (→ CObservation2DRangeScan) and sensor_msgs/PointCloud2
 // (→ CObservationPointCloud) from a ROS1 bag through rosbag_storage and mrpt::ros1bridge, with
-// robot poses from /tf and odometry. Observation time = message header stamp. Several topics
+// robot poses from /tf and odometry; or a detector's geometry_msgs/PoseArray topics as frames of
+// detections. Observation time = message header stamp. Several topics
 // (scanners on one robot) are merged: consecutive messages of distinct topics within
 // `merge_window` make one frame, each observation with its own mounting pose.
 #include <mrpt/ros1bridge/time.h>
@@ -28,6 +29,7 @@ namespace {
 
 const std::string kLaserScan = "sensor_msgs/LaserScan";
 const std::string kPointCloud2 = "sensor_msgs/PointCloud2";
+const std::string kPoseArray = "geometry_msgs/PoseArray";
 
 struct RosbagParams {
   std::string file;
@@ -44,7 +46,9 @@ const ParamTable<RosbagParams>& table() {
           .inputFile(&P::file, "file", "the .bag to replay")
           .text(&P::topic, "topic",
                 "topics to replay (comma list; several are merged, see merge_window); empty: the "
-                "bag's only LaserScan/PointCloud2 topic")
+                "bag's only LaserScan/PointCloud2 topic. geometry_msgs/PoseArray topics (a "
+                "detector's people or legs, sensor frame) replay as detections, one frame a "
+                "message")
           .include(&P::frames, robotFrameTable())
           .text(&P::odom_topic, "odom_topic",
                 "nav_msgs/Odometry topic used when tf has no fixed_frame→base_frame link; empty: "
@@ -84,7 +88,15 @@ class RosbagSource : public Sensor {
     it_ = view_->begin();
   }
 
+  bool detectionsOnly() const override { return detections_; }
+
+  std::vector<std::pair<std::string, long>> counters() const override {
+    if (!detections_) return {};
+    return {{"poses_skipped", poses_skipped_}};
+  }
+
   bool next(Frame& frame) override {
+    if (detections_) return nextPoses(frame);
     // A group: consecutive messages (bag order) while no topic repeats and their stamps span at
     // most merge_window; the first message that does not fit waits for the next frame.
     std::vector<MountedObservation> group;
@@ -119,6 +131,36 @@ class RosbagSource : public Sensor {
   double progress() const override { return total_ ? static_cast<double>(consumed_) / total_ : -1; }
 
  private:
+  // One PoseArray message as a frame of detections.
+  bool nextPoses(Frame& frame) {
+    for (; it_ != view_->end(); ++it_) {
+      const rosbag::MessageInstance& m = *it_;
+      ++consumed_;
+      boost::shared_ptr<geometry_msgs::PoseArray> poses;
+      try {
+        poses = checkedInstantiate<geometry_msgs::PoseArray>(m);
+      } catch (const std::exception& e) {
+        throw DataError(file_ + ": message " + std::to_string(consumed_ - 1) + " on " +
+                        m.getTopic() + ": " + oneLine(e.what()));
+      }
+      if (!poses) continue;
+      // No header stamp (0, as some extracted bags have): the time the bag recorded it.
+      const ros::Time stamp = poses->header.stamp.isZero() ? m.getTime() : poses->header.stamp;
+      mrpt::poses::CPose3D robot, mount;
+      const bool known = poses_->lookup(poses->header.frame_id, m.getTopic(), stamp, robot, mount);
+      poseArrayToFrame(*poses, robot, mount, known, frame, poses_skipped_);
+      bool went_back = false;
+      frame.t = clock_.next(stamp.toSec(), went_back);
+      if (went_back)
+        std::cerr << "warning: " << file_ << ": header stamps go back in bag order (message "
+                  << consumed_ << "); frame times are held at the newest so far\n";
+      ++it_;
+      if (realtime_) pacer_.wait(frame.t);
+      return true;
+    }
+    return false;
+  }
+
   // The next scan or cloud message of the view, or nothing at its end.
   std::optional<MountedObservation> read() {
     for (; it_ != view_->end(); ++it_) {
@@ -168,9 +210,12 @@ class RosbagSource : public Sensor {
   // The requested topics, checked against the bag; or the bag's only scan/cloud topic.
   std::vector<std::string> chooseTopics(const std::vector<std::string>& requested) {
     rosbag::View all(bag_);
-    std::vector<std::string> usable, every;
+    std::vector<std::string> usable, every, poses;
     for (const rosbag::ConnectionInfo* c : all.getConnections()) {
       if (std::find(every.begin(), every.end(), c->topic) == every.end()) every.push_back(c->topic);
+      if (c->datatype == kPoseArray &&
+          std::find(poses.begin(), poses.end(), c->topic) == poses.end())
+        poses.push_back(c->topic);
       if ((c->datatype == kLaserScan || c->datatype == kPointCloud2) &&
           std::find(usable.begin(), usable.end(), c->topic) == usable.end())
         usable.push_back(c->topic);
@@ -185,15 +230,27 @@ class RosbagSource : public Sensor {
       throw ConfigError("topic: bag '" + file_ +
                         "' has several scan topics, choose from: " + listing);
     }
+    // A detector's PoseArray topics, asked for by name, replay as detections (not with scans).
+    const auto isPoses = [&](const std::string& t) {
+      return std::find(poses.begin(), poses.end(), t) != poses.end();
+    };
+    const long n_poses = std::count_if(requested.begin(), requested.end(), isPoses);
+    if (n_poses > 0 && n_poses < long(requested.size()))
+      throw ConfigError("topic: give scan topics or geometry_msgs/PoseArray topics, not both");
+    if (n_poses > 0) {
+      detections_ = true;
+      usable_ = requested;
+      return requested;
+    }
     for (const auto& t : requested) {
       if (std::find(usable.begin(), usable.end(), t) != usable.end()) continue;
       const bool exists = std::find(every.begin(), every.end(), t) != every.end();
       const std::string hint = closestMatch(t, usable);
-      throw ConfigError(
-          "topic: '" + t + "' " +
-          (exists ? "is not a LaserScan or PointCloud2 topic" : "is not in bag '" + file_ + "'") +
-          (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
-          (listing.empty() ? "" : "; scan topics: " + listing));
+      throw ConfigError("topic: '" + t + "' " +
+                        (exists ? "is not a LaserScan, PointCloud2 or PoseArray topic"
+                                : "is not in bag '" + file_ + "'") +
+                        (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+                        (listing.empty() ? "" : "; scan topics: " + listing));
     }
     return requested;
   }
@@ -209,13 +266,17 @@ class RosbagSource : public Sensor {
   bool realtime_ = false;
   ReplayPacer pacer_;
   std::optional<MountedObservation> pending_;  // read, but did not fit the last frame
+  bool detections_ = false;                    // the topics are PoseArrays: detections
+  long poses_skipped_ = 0;
   FrameClock clock_;
 };
 
 PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Sensor;
-  d.doc = "Replays LaserScan / PointCloud2 topics of a ROS1 bag, robot pose from /tf and odometry";
+  d.doc =
+      "Replays LaserScan / PointCloud2 (or PoseArray detection) topics of a ROS1 bag, robot pose "
+      "from /tf and odometry";
   d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<RosbagSource>(ctx);
