@@ -17,7 +17,8 @@ int rosCommand(const std::vector<std::string>& args) {
   PipelineCommand c;
   const po::options_description opts = pipelineOptions(
       c,
-      "LaserScan / PointCloud2 topic(s) to subscribe to (comma list), instead of the source's "
+      "LaserScan / PointCloud2 topic(s) to subscribe to (comma list; a detector's PoseArray "
+      "topics with --set source.detections=true), instead of the source's "
       "`topic` (default /scan)",
       "override a key: section.key=value (repeatable; the source is `ros_topic`, the appended "
       "publisher section `publish`)");

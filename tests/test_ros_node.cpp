@@ -196,6 +196,7 @@ struct NodeCase {
   std::string bag, tag, pipeline = "people_2d_legs.ini", topic = "/scan";
   std::size_t min_scans = 1;
   bool cloud = false, expect_following = false;
+  bool poses = false;  // the topic carries a detector's PoseArray (source.detections = true)
 };
 
 // Plays the case's bag into a private ROS graph running `pedtrack ros` and checks every scan
@@ -210,9 +211,10 @@ void checkNodeAgainstRun(const NodeCase& c) {
 
   // The reference: the same pipeline replaying the bag.
   const std::string dir = freshDir(c.tag);
-  std::vector<std::string> ref_args{
-      "run",   kConfigs + c.pipeline, "--input", bag, "--topic", c.topic,
-      "--out", dir + "/ref",          "-q"};
+  // A pipeline by name is a shipped one; a path, the test's own.
+  const std::string pipeline = c.pipeline[0] == '/' ? c.pipeline : kConfigs + c.pipeline;
+  std::vector<std::string> ref_args{"run",   pipeline, "--input",    bag, "--topic",
+                                    c.topic, "--out",  dir + "/ref", "-q"};
   ref_args.insert(ref_args.end(), follow.begin(), follow.end());
   const auto ref_run = runHost(ref_args);
   INFO(ref_run.output);
@@ -252,12 +254,16 @@ void checkNodeAgainstRun(const NodeCase& c) {
     got.scans.push_back(stamp);
   };
   ros::Subscriber scan_sub =
-      c.cloud ? nh.subscribe<sensor_msgs::PointCloud2>(
+      c.poses ? nh.subscribe<geometry_msgs::PoseArray>(
                     c.topic, q,
-                    [&](const sensor_msgs::PointCloud2::ConstPtr& m) { on_scan(m->header.stamp); })
-              : nh.subscribe<sensor_msgs::LaserScan>(
-                    c.topic, q,
-                    [&](const sensor_msgs::LaserScan::ConstPtr& m) { on_scan(m->header.stamp); });
+                    [&](const geometry_msgs::PoseArray::ConstPtr& m) { on_scan(m->header.stamp); })
+      : c.cloud
+          ? nh.subscribe<sensor_msgs::PointCloud2>(
+                c.topic, q,
+                [&](const sensor_msgs::PointCloud2::ConstPtr& m) { on_scan(m->header.stamp); })
+          : nh.subscribe<sensor_msgs::LaserScan>(
+                c.topic, q,
+                [&](const sensor_msgs::LaserScan::ConstPtr& m) { on_scan(m->header.stamp); });
   auto tracks_sub = nh.subscribe<geometry_msgs::PoseArray>(
       "/pedtrack/tracks", q, [&](const geometry_msgs::PoseArray::ConstPtr& m) {
         std::lock_guard<std::mutex> lk(got.m);
@@ -282,7 +288,7 @@ void checkNodeAgainstRun(const NodeCase& c) {
   // whose node ran slower than the bag filled the queue and dropped one.)
   std::vector<std::string> node_args{PEDTRACK_BIN,
                                      "ros",
-                                     kConfigs + c.pipeline,
+                                     pipeline,
                                      "--topic",
                                      c.topic,
                                      "--set",
@@ -299,6 +305,7 @@ void checkNodeAgainstRun(const NodeCase& c) {
                                      dir + "/node",
                                      "-q"};
   node_args.insert(node_args.end(), follow.begin(), follow.end());
+  if (c.poses) node_args.insert(node_args.end(), {"--set", "source.detections=true"});
   Child node(node_args, dir + "/node.log");
   // Its publishers appear once its source has subscribed (plugins are created in stage order),
   // and this test is connected to them before the first scan.
@@ -416,6 +423,28 @@ std::string writeSimulatedBag(const std::string& path, int scans) {
   return path;
 }
 
+// A detector's output as a bag: two people walking past each other 4 m ahead of a scanner, as a
+// geometry_msgs/PoseArray at 10 Hz in the laser's frame (no /tf: the laser is the fixed frame).
+std::string writeDetectionsBag(const std::string& path, int messages) {
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  for (int i = 0; i < messages; ++i) {
+    geometry_msgs::PoseArray a;
+    a.header.stamp = ros::Time(1600000000.0 + 0.1 * i);
+    a.header.frame_id = "laser";
+    a.header.seq = static_cast<std::uint32_t>(i);
+    for (double dir : {1.0, -1.0}) {
+      geometry_msgs::Pose p;
+      p.position.x = 4 + 0.5 * dir;
+      p.position.y = dir * (-3 + 0.12 * i);
+      p.orientation.w = 1;
+      a.poses.push_back(p);
+    }
+    bag.write("/people", a.header.stamp, a);
+  }
+  bag.close();
+  return path;
+}
+
 // A bag of simulated VLP-16 revolutions (crowd.ini: 20 walkers) as PointCloud2 messages, the
 // points of each revolution in the sensor's frame.
 std::string writeSimulatedCloudBag(const std::string& path, int revolutions) {
@@ -459,6 +488,21 @@ TEST_CASE("pedtrack ros publishes the tracks of every simulated scan, as pedtrac
   c.tag = "ros_node_sim";
   c.min_scans = 200;
   // Nobody is in the follow zone in front of the scanner here: following is not checked.
+  checkNodeAgainstRun(c);
+}
+
+TEST_CASE("pedtrack ros tracks a detector's PoseArray topic, as pedtrack run") {
+  NodeCase c;
+  const std::string dir = freshDir("ros_node_poses_bag");
+  c.bag = writeDetectionsBag(dir + "/people.bag", 60);
+  c.tag = "ros_node_poses";
+  c.pipeline = dir + "/track.ini";
+  writeFile(c.pipeline,
+            "[pipeline]\nstages = source track\n[source]\nplugin = rosbag\nfile = people.bag\n"
+            "topic = /people\n[track]\nplugin = kf_hungarian\n");
+  c.topic = "/people";
+  c.poses = true;
+  c.min_scans = 60;
   checkNodeAgainstRun(c);
 }
 

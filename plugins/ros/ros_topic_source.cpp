@@ -1,7 +1,9 @@
 // `ros_topic`: a live ROS1 source. Subscribes to sensor_msgs/LaserScan or sensor_msgs/PointCloud2
 // topics (whichever each publisher sends), places the robot and each sensor with /tf, and hands
 // the pipeline one frame per scan, or per group of scans of distinct topics within
-// `merge_window` (several scanners on one robot), like the rosbag source does with a bag.
+// `merge_window` (several scanners on one robot), like the rosbag source does with a bag. With
+// `detections`, the topics carry a detector's geometry_msgs/PoseArray instead: one frame of
+// detections a message.
 // Messages wait in a bounded queue filled by a roscpp spinner thread; the oldest is dropped
 // when the pipeline falls behind (the pipeline's own live queue drops frames after that).
 #include <mrpt/ros1bridge/time.h>
@@ -42,6 +44,7 @@ struct RosTopicParams {
   double tf_timeout = 0.1;    // s a scan waits for /tf to reach its stamp
   double idle_timeout = 0.0;  // s; 0: wait until SIGINT/SIGTERM
   bool end_on_idle = false;
+  bool detections = false;
   long queue_size = 20;
   NodeParams node;
 };
@@ -62,6 +65,9 @@ const ParamTable<RosTopicParams>& table() {
                 "a message came or a publisher is connected; 0: wait until SIGINT/SIGTERM")
           .boolean(&P::end_on_idle, "end_on_idle",
                    "treat idle_timeout as the end of the stream (a bag played into the node)")
+          .boolean(&P::detections, "detections",
+                   "the topics carry a detector's geometry_msgs/PoseArray (people or legs in the "
+                   "sensor's frame, placed by /tf): one frame of detections a message, score 1")
           .integer(&P::queue_size, "queue_size", "", 1, 100000,
                    "messages waiting for the pipeline; beyond it the oldest is dropped "
                    "(queue_drops in run.json)")
@@ -78,6 +84,7 @@ class RosTopicSource : public Sensor {
         merge_window_(p.frames.merge_window),
         idle_timeout_(p.idle_timeout),
         end_on_idle_(p.end_on_idle),
+        detections_(p.detections),
         queue_size_(static_cast<std::size_t>(p.queue_size)) {
     if (topics_.empty()) throw ConfigError("topic: no topic given");
     const std::string mounts_key = table().where(
@@ -112,6 +119,7 @@ class RosTopicSource : public Sensor {
   }
 
   bool live() const override { return true; }
+  bool detectionsOnly() const override { return detections_; }
 
   bool next(Frame& frame) override {
     // Idle time runs from this call, but only once the topics are in use (a message came, or a
@@ -152,9 +160,10 @@ class RosTopicSource : public Sensor {
 
   std::vector<std::pair<std::string, long>> counters() const override {
     std::lock_guard<std::mutex> lk(m_);
-    return {{"messages", messages_},       {"queue_drops", queue_drops_},
-            {"wrong_type", wrong_type_},   {"bad_messages", bad_},
-            {"tf_waits", poses_->waits()}, {"tf_misses", poses_->misses()}};
+    return {{"messages", messages_},          {"queue_drops", queue_drops_},
+            {"wrong_type", wrong_type_},      {"bad_messages", bad_},
+            {"tf_waits", poses_->waits()},    {"tf_misses", poses_->misses()},
+            {"poses_skipped", poses_skipped_}};
   }
 
  private:
@@ -163,6 +172,7 @@ class RosTopicSource : public Sensor {
     std::size_t topic = 0;  // index into topics_
     sensor_msgs::LaserScan::ConstPtr scan;
     sensor_msgs::PointCloud2::ConstPtr cloud;
+    geometry_msgs::PoseArray::ConstPtr poses;
     ros::Time stamp;
     std::string frame_id;
     Clock::time_point arrival;
@@ -179,7 +189,14 @@ class RosTopicSource : public Sensor {
     in.topic = topic;
     in.arrival = Clock::now();
     try {
-      if (auto s = m.instantiate<sensor_msgs::LaserScan>()) {
+      if (detections_) {
+        if (auto p = m.instantiate<geometry_msgs::PoseArray>()) {
+          // No header stamp (some detectors leave it 0): the time it arrived.
+          in.stamp = p->header.stamp.isZero() ? ros::Time::now() : p->header.stamp;
+          in.frame_id = tfFrame(p->header.frame_id);
+          in.poses = p;
+        }
+      } else if (auto s = m.instantiate<sensor_msgs::LaserScan>()) {
         in.stamp = s->header.stamp;
         in.frame_id = tfFrame(s->header.frame_id);
         in.scan = s;
@@ -196,10 +213,11 @@ class RosTopicSource : public Sensor {
     }
     std::lock_guard<std::mutex> lk(m_);
     ++messages_;
-    if (!in.scan && !in.cloud) {
+    if (!in.scan && !in.cloud && !in.poses) {
       ++wrong_type_;
       warn_(topics_[topic] + " carries " + m.datatype +
-            ", not sensor_msgs/LaserScan or sensor_msgs/PointCloud2: ignored");
+            (detections_ ? ", not geometry_msgs/PoseArray (detections = true): ignored"
+                         : ", not sensor_msgs/LaserScan or sensor_msgs/PointCloud2: ignored"));
       return;
     }
     if (pending_.size() >= queue_size_) {
@@ -217,7 +235,8 @@ class RosTopicSource : public Sensor {
     std::vector<Incoming> group;
     group.push_back(std::move(pending_.front()));
     pending_.pop_front();
-    if (topics_.size() < 2 || merge_window_ <= 0) return group;
+    // A detector's message is a frame of its own.
+    if (detections_ || topics_.size() < 2 || merge_window_ <= 0) return group;
     const auto deadline = group.front().arrival + std::chrono::duration_cast<Clock::duration>(
                                                       std::chrono::duration<double>(merge_window_));
     double lo = group.front().stamp.toSec(), hi = lo;
@@ -244,6 +263,23 @@ class RosTopicSource : public Sensor {
   // Converts a group into a frame, as the rosbag source does (ros_frames.h). False when no
   // message of it could be converted.
   bool makeFrame(const std::vector<Incoming>& group, Frame& frame) {
+    if (detections_) {
+      const Incoming& in = group.front();
+      mrpt::poses::CPose3D robot, mount;
+      const bool known = poses_->lookup(in.frame_id, topics_[in.topic], in.stamp, robot, mount);
+      long skipped = 0;
+      rosbag_source::poseArrayToFrame(*in.poses, robot, mount, known, frame, skipped);
+      {
+        std::lock_guard<std::mutex> lk(m_);
+        poses_skipped_ += skipped;
+      }
+      bool went_back = false;
+      frame.t = clock_.next(in.stamp.toSec(), went_back);
+      if (went_back)
+        std::cerr << "warning: ros_topic: header stamps go back; frame times are held at the "
+                     "newest so far\n";
+      return true;
+    }
     std::vector<rosbag_source::MountedObservation> done;
     for (const Incoming& in : group) {
       rosbag_source::MountedObservation c;
@@ -276,7 +312,7 @@ class RosTopicSource : public Sensor {
 
   std::vector<std::string> topics_;
   double merge_window_, idle_timeout_;
-  bool end_on_idle_;
+  bool end_on_idle_, detections_;
   std::size_t queue_size_;
   std::unique_ptr<LivePoses> poses_;
   ros::CallbackQueue callbacks_;
@@ -285,7 +321,7 @@ class RosTopicSource : public Sensor {
   mutable std::mutex m_;  // guards pending_, the counts and warn_
   std::condition_variable cv_;
   std::deque<Incoming> pending_;
-  long messages_ = 0, queue_drops_ = 0, wrong_type_ = 0, bad_ = 0;
+  long messages_ = 0, queue_drops_ = 0, wrong_type_ = 0, bad_ = 0, poses_skipped_ = 0;
   WarnOnce warn_{"ros_topic: "};  // one line per distinct problem; counts go to run.json
   rosbag_source::FrameClock clock_;
 };
@@ -293,7 +329,9 @@ class RosTopicSource : public Sensor {
 PluginDescriptor describe() {
   PluginDescriptor d;
   d.category = Category::Sensor;
-  d.doc = "Live ROS1 LaserScan / PointCloud2 topics, robot and sensor poses from /tf";
+  d.doc =
+      "Live ROS1 LaserScan / PointCloud2 (or PoseArray detection) topics, robot and sensor poses "
+      "from /tf";
   d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<RosTopicSource>(ctx);
