@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 struct KittiMotArgs {
   std::string truth, calib, tracks, object_class = "pedestrian";
   double iou = 0.25, distance = 0;
-  bool json = false;
+  bool json = false, score_drift = false;
 };
 
 // The results file of sequence `name` under `tracks`: a kitti_tracks.txt, a run's --out folder,
@@ -104,8 +104,11 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
       "iou", po::value(&a.iou)->default_value(0.25), "3D IoU a match needs")(
       "distance", po::value(&a.distance),
       "m: match by the boxes' bottom centres within this distance in bird's-eye view instead of "
-      "IoU (MOTP is then the mean distance, m)")("json", po::bool_switch(&a.json),
-                                                 "print one JSON object");
+      "IoU (MOTP is then the mean distance, m)")(
+      "score-drift", po::bool_switch(&a.score_drift),
+      "reproduce AB3DMOT's evaluate.py exactly: it re-averages the track scores it overwrote in "
+      "every pass, and a track can drop below the threshold its own mean set")(
+      "json", po::bool_switch(&a.json), "print one JSON object");
   po::variables_map vm;
   if (!parseOptions("eval",
                     "--truth LABELS.txt|LABEL_DIR [--calib CALIB.txt|CALIB_DIR] --tracks "
@@ -149,6 +152,7 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
   o.object_class = a.object_class;
   o.min_iou = a.iou;
   o.max_distance = a.distance;
+  o.score_drift = a.score_drift;
   std::vector<eval::KittiSequence> seqs;
   std::vector<std::string> without, names;
   for (const auto& [name, path] : labels) {
@@ -188,6 +192,7 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
     std::cout << "{\"class\": \"" << a.object_class << "\", \"match\": \""
               << (a.distance > 0 ? "distance" : "iou3d")
               << "\", \"threshold\": " << (a.distance > 0 ? a.distance : a.iou)
+              << ", \"score_drift\": " << (a.score_drift ? "true" : "false")
               << ", \"sequences\": {";
     for (std::size_t i = 0; i < seqs.size(); ++i)
       std::cout << (i ? ", " : "") << "\"" << jsonEscape(names[i]) << "\": " << jsonOf(per[i]);
@@ -197,8 +202,8 @@ int evalKittiMotCommand(const std::vector<std::string>& args) {
   std::cout << "KITTI tracking, " << a.object_class << ", "
             << (a.distance > 0 ? "bird's-eye centre distance <= " + num(a.distance, 2) + " m"
                                : "3D IoU >= " + num(a.iou, 2))
-            << " (AB3DMOT's rules; MOTA, MOTP, IDS, FRAG, FP, FN at the score threshold of the "
-               "best MOTA)\n"
+            << " (AB3DMOT's rules" << (a.score_drift ? ", with evaluate.py's score drift" : "")
+            << "; MOTA, MOTP, IDS, FRAG, FP, FN at the score threshold of the best MOTA)\n"
             << "sequence  sAMOTA   AMOTA    MOTA    MOTP   IDS  FRAG     FP     FN  truths  recall "
                "  HOTA\n";
   for (std::size_t i = 0; i < seqs.size(); ++i) std::cout << row(names[i], per[i]);

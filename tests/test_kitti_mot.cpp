@@ -126,6 +126,31 @@ TEST_CASE("a tiny KITTI sequence scored by hand", "[kitti_mot]") {
   CHECK(d.best.motp() == Approx(0).margin(1e-12));
 }
 
+TEST_CASE("evaluate.py's score drift drops a track at the threshold its own mean set",
+          "[kitti_mot]") {
+  // 11 boxes scoring 0.3: their mean is 0.29999999999999993, and the mean of 11 copies of that
+  // is 0.2999999999999999, below it. Re-averaged in every pass as evaluate.py does, the track
+  // fails each recall level's threshold: every level scores 0.
+  KittiSequence s;
+  s.name = "drift";
+  for (long f = 0; f < 11; ++f) {
+    s.truth.push_back(row(f, 1, "pedestrian", 0, 10));
+    s.tracks.push_back(row(f, 5, "pedestrian", 0, 10, 0.3));
+  }
+  KittiMotOptions o;
+  const KittiMotResult plain = evaluateKittiMot({s}, o);
+  CHECK(plain.samota > 0.2);
+  CHECK(plain.best.mota() == 1);
+  o.score_drift = true;
+  const KittiMotResult drift = evaluateKittiMot({s}, o);
+  CHECK(drift.levels == plain.levels);
+  CHECK(drift.samota == Approx(0).margin(1e-9));  // each level: 1 - 11 r / (11 r)
+  CHECK(drift.amota == Approx(0).margin(1e-9));
+  // No level gave a positive MOTA: the reported pass keeps every track.
+  CHECK(drift.threshold == -1e4);
+  CHECK(drift.best.mota() == 1);
+}
+
 TEST_CASE("an ID switch across a missed frame is no switch, as KITTI counts", "[kitti_mot]") {
   KittiSequence s;
   s.name = "gap";

@@ -30,6 +30,7 @@ struct Prepared {
   std::vector<std::vector<const KittiTrackRow*>> truth, dontcare, tracks;
   std::vector<std::vector<std::size_t>> track_index;  // into `ever_matched`
   std::map<long, double> mean_score;                  // by track id
+  std::map<long, long> lines;                         // by track id: its lines in the file
   std::set<long> truth_ids;
 };
 
@@ -69,7 +70,10 @@ Prepared prepare(const KittiSequence& s, const KittiMotOptions& o) {
     p.tracks[std::size_t(r.frame)].push_back(&r);
     p.track_index[std::size_t(r.frame)].push_back(k);
   }
-  for (const auto& [id, sc] : sums) p.mean_score[id] = sc.first / double(sc.second);
+  for (const auto& [id, sc] : sums) {
+    p.mean_score[id] = sc.first / double(sc.second);
+    p.lines[id] = sc.second;
+  }
   return p;
 }
 
@@ -84,7 +88,8 @@ double overlapShare(const KittiTrackRow& t, const KittiTrackRow& d) {
 // KITTI's `valid` flag per tracker box, which its tool never resets between passes: a box matched
 // once is never ignored again (kept so the figures equal the tool's).
 KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<char>>& ever,
-                    double threshold, const KittiMotOptions& o, std::vector<double>* scores) {
+                    const std::vector<std::map<long, double>>& means, double threshold,
+                    const KittiMotOptions& o, std::vector<double>* scores) {
   KittiMotCounts c;
   const std::string near = neighbourOf(o.object_class);
   const bool by_distance = o.max_distance > 0;
@@ -97,7 +102,7 @@ KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<c
       std::vector<const KittiTrackRow*> T;
       std::vector<std::size_t> Ti;
       for (std::size_t k = 0; k < p.tracks[f].size(); ++k)
-        if (p.mean_score.at(p.tracks[f][k]->id) >= threshold)
+        if (means[si].at(p.tracks[f][k]->id) >= threshold)
           T.push_back(p.tracks[f][k]), Ti.push_back(p.track_index[f][k]);
       const int n = int(G.size()), m = int(T.size());
       std::vector<double> cost(std::size_t(n * m)), sim(std::size_t(n * m));
@@ -123,7 +128,7 @@ KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<c
           ignored_tp += ignored;
           c.sum_similarity += sim[std::size_t(i * m + j)];
           ever[si][Ti[std::size_t(j)]] = 1;
-          if (scores) scores->push_back(p.mean_score.at(T[std::size_t(j)]->id));
+          if (scores) scores->push_back(means[si].at(T[std::size_t(j)]->id));
         } else {
           ignored_fn += ignored;
         }
@@ -255,13 +260,29 @@ double KittiMotCounts::smota(double r) const {
 KittiMotResult evaluateKittiMot(std::vector<KittiSequence> sequences, const KittiMotOptions& o) {
   std::vector<Prepared> seqs;
   std::vector<std::vector<char>> ever;
+  std::vector<std::map<long, double>> means;
   for (const auto& s : sequences) {
     seqs.push_back(prepare(s, o));
     ever.emplace_back(s.tracks.size(), 0);
+    means.push_back(seqs.back().mean_score);
   }
+  // evaluate.py overwrites every box's score with its track's mean and averages those again in
+  // the next pass: Python's sum of n equal floats over n can land one step below the mean, so a
+  // track may fail the very threshold it set. Reproduced on request, pass by pass.
+  const auto drift = [&] {
+    if (!o.score_drift) return;
+    for (std::size_t si = 0; si < seqs.size(); ++si)
+      for (auto& [id, m] : means[si]) {
+        const long n = seqs[si].lines.at(id);
+        double sum = 0;
+        for (long k = 0; k < n; ++k) sum += m;
+        m = sum / double(n);
+      }
+  };
   KittiMotResult res;
   std::vector<double> scores;
-  const KittiMotCounts all = pass(seqs, ever, -1e4, o, &scores);
+  const KittiMotCounts all = pass(seqs, ever, means, -1e4, o, &scores);
+  drift();
   // The recall levels 1/40 ... 40/40: the matched score at which each is (nearest) reached.
   constexpr int kLevels = 40;
   std::sort(scores.begin(), scores.end(), std::greater<>());
@@ -278,7 +299,8 @@ KittiMotResult evaluateKittiMot(std::vector<KittiSequence> sequences, const Kitt
   if (!levels.empty()) levels.erase(levels.begin());  // recall 0 is not a level
   double best_mota = 0;
   for (const auto& [threshold, r] : levels) {
-    const KittiMotCounts c = pass(seqs, ever, threshold, o, nullptr);
+    const KittiMotCounts c = pass(seqs, ever, means, threshold, o, nullptr);
+    drift();
     res.samota += c.smota(r);
     res.amota += c.mota();
     res.amotp += c.motp();
@@ -286,7 +308,7 @@ KittiMotResult evaluateKittiMot(std::vector<KittiSequence> sequences, const Kitt
   }
   res.samota /= kLevels, res.amota /= kLevels, res.amotp /= kLevels;
   res.levels = int(levels.size());
-  res.best = pass(seqs, ever, res.threshold, o, nullptr);
+  res.best = pass(seqs, ever, means, res.threshold, o, nullptr);
   std::vector<HotaResult> per_sequence;
   for (const Prepared& p : seqs) per_sequence.push_back(hota(hotaFrames(p, o)));
   if (!per_sequence.empty()) res.hota = combineHota(per_sequence);

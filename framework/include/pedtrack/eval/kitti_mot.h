@@ -44,6 +44,9 @@ struct KittiMotOptions {
   double min_height = 25;  ///< px: an unmatched box this low or lower is not a false positive
   int max_occlusion = 2;
   int max_truncation = 0;
+  /// Reproduce evaluate.py's re-averaging of the track scores it overwrites, pass after pass
+  /// (a floating-point artifact: a track can fail the threshold its own mean set, and drop out).
+  bool score_drift = false;
 };
 
 /// The counts of one pass at one score threshold, pooled over the sequences.
