@@ -28,6 +28,8 @@ KittiObject fromFields(const std::vector<std::string>& f, std::size_t at, const 
   }
   KittiObject o;
   o.type = f[at];
+  if (!(v[1] >= -1 && v[1] <= 3))
+    throw DataError(where + ": occluded '" + f[at + 2] + "' is out of KITTI's range (-1 ... 3)");
   o.truncated = v[0];
   o.occluded = int(v[1]);
   o.h = v[7], o.w = v[8], o.l = v[9];

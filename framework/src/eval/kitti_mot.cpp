@@ -344,6 +344,11 @@ std::vector<KittiTrackRow> readKittiTrackFile(const std::string& path) {
       throw DataError(where + ": frame '" + v[0] + "' is not a frame number (0 ... 1,000,000)");
     if (d[1] < -1 || d[1] > 1e12 || d[1] != std::floor(d[1]))
       throw DataError(where + ": track id '" + v[1] + "' is not an id (-1 or a whole number)");
+    // KITTI: truncated 0-2 (tracking) or 0-1 (objects), occluded 0-3; DontCare -1.
+    for (std::size_t k : {std::size_t(3), std::size_t(4)})
+      if (d[k] < -1 || d[k] > 3)
+        throw DataError(where + ": " + (k == 3 ? "truncated" : "occluded") + " '" + v[k] +
+                        "' is out of KITTI's range (-1 ... 3)");
     KittiTrackRow r;
     r.frame = long(d[0]), r.id = long(d[1]), r.type = lower(v[2]);
     r.truncated = int(d[3]), r.occluded = int(d[4]);
