@@ -100,12 +100,13 @@ void validate(RenderArgs& a) {
   if (!a.calib.empty() && a.kitti_labels.empty()) bad("--calib goes with --kitti-labels");
   if (!a.kitti_labels.empty()) {
     requireFile("kitti-labels", a.kitti_labels);
-    // KITTI's layout: label_02/SSSS.txt beside calib/SSSS.txt.
-    const fs::path label(a.kitti_labels);
-    if (a.calib.empty())
-      a.calib = (label.parent_path().parent_path() / "calib" / label.filename()).string();
+    if (a.calib.empty()) a.calib = kittiCalibBeside(a.kitti_labels);  // label_02/ beside calib/
     if (!fs::is_regular_file(a.calib))
-      bad("--kitti-labels: no calibration '" + a.calib + "' (give --calib CALIB/SSSS.txt)");
+      bad("--kitti-labels: no calibration " +
+          (a.calib.empty()
+               ? "calib/" + fs::path(a.kitti_labels).filename().string() + " beside its folder"
+               : "'" + a.calib + "'") +
+          " (give --calib CALIB/SSSS.txt)");
   }
   if (!std::isfinite(a.person_score)) bad("--person-score: must be a number");
 }

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -117,6 +118,13 @@ bool kittiImageBox(const KittiCalib& c, const KittiCameraBox& b, std::array<doub
 
 double kittiAlpha(const KittiCameraBox& b) {
   return std::remainder(b.ry - std::atan2(b.x, b.z), 2 * M_PI);
+}
+
+std::string kittiCalibBeside(const std::string& file) {
+  const std::filesystem::path p(file);
+  const std::filesystem::path c = p.parent_path().parent_path() / "calib" / p.filename();
+  std::error_code ec;
+  return std::filesystem::is_regular_file(c, ec) ? c.string() : "";
 }
 
 double veloYawFromRotationY(double rotation_y) {

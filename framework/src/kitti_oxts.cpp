@@ -44,10 +44,26 @@ mrpt::poses::CPose3D oxtsPose(const Oxts& o, double scale) {
   return mrpt::poses::CPose3D(x, y, o.alt, o.yaw, o.pitch, o.roll);
 }
 
-OxtsTrajectory::OxtsTrajectory(std::string oxts, const std::vector<double>& imu_to_velo,
-                               double mount_z)
+const ParamTable<KittiRig>& kittiRigTable() {
+  using P = KittiRig;
+  static const auto t =
+      ParamTable<P>()
+          .real(&P::scan_rate, "scan_rate", "Hz", 0.1, 1000,
+                "scans per second (KITTI: 10) where KITTI raw's timestamps.txt gives no times: "
+                "scan n is at n / scan_rate s")
+          .real(&P::mount_z, "mount_z", "m", 0, 10,
+                "the scanner's height above the road (KITTI's HDL-64: 1.73 m); the robot frame "
+                "is on the road under it")
+          .vector(&P::imu_to_velo, "imu_to_velo", "m", 3, -10, 10,
+                  "where the scanner is in the OXTS unit's frame (KITTI's Tr_imu_to_velo "
+                  "inverted; its rotation, under 1 degree, is left out)");
+  return t;
+}
+
+OxtsTrajectory::OxtsTrajectory(std::string oxts, const KittiRig& rig)
     : oxts_(std::move(oxts)),
-      robot_in_imu_(imu_to_velo.at(0), imu_to_velo.at(1), imu_to_velo.at(2) - mount_z, 0, 0, 0) {}
+      robot_in_imu_(rig.imu_to_velo.at(0), rig.imu_to_velo.at(1),
+                    rig.imu_to_velo.at(2) - rig.mount_z, 0, 0, 0) {}
 
 mrpt::poses::CPose3D OxtsTrajectory::robotPose(long index) {
   const Oxts o = readOxts(oxts_, index);

@@ -48,6 +48,10 @@ bool kittiImageBox(const KittiCalib& c, const KittiCameraBox& b, std::array<doub
 /// KITTI's observation angle: rotation_y minus the bearing of the box centre, in (−π, π].
 double kittiAlpha(const KittiCameraBox& b);
 
+/// KITTI's layout, DATA/<folder>/SSSS.txt beside DATA/calib/SSSS.txt (labels, a detector's
+/// output): the calibration file of `file`, empty when there is none.
+std::string kittiCalibBeside(const std::string& file);
+
 /// rotation_y turns a box about the camera's y (down) axis from the camera's x (right): in the
 /// Velodyne's frame (x forward, z up) its heading is −rotation_y − π/2, in (−π, π].
 double veloYawFromRotationY(double rotation_y);

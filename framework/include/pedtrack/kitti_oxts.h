@@ -6,7 +6,19 @@
 #include <string>
 #include <vector>
 
+#include "pedtrack/param_table.h"
+
 namespace pedtrack::kitti {
+
+/// How KITTI's car carries its Velodyne, and how fast it scans: the keys the `kitti` and
+/// `detections` sources share.
+struct KittiRig {
+  double scan_rate = 10;                               ///< Hz
+  double mount_z = 1.73;                               ///< m, the Velodyne above the road
+  std::vector<double> imu_to_velo{0.81, -0.32, 0.80};  ///< m, the Velodyne in the OXTS frame
+};
+/// `scan_rate`, `mount_z` and `imu_to_velo`, declared once.
+const ParamTable<KittiRig>& kittiRigTable();
 
 /// One OXTS record's position and attitude (KITTI's first six values).
 struct Oxts {
@@ -26,9 +38,9 @@ mrpt::poses::CPose3D oxtsPose(const Oxts& o, double scale);
 /// scanner; the fixed frame is the robot frame of the first scan asked for.
 class OxtsTrajectory {
  public:
-  /// `imu_to_velo`: where the scanner is in the OXTS unit's frame (m; KITTI's Tr_imu_to_velo
-  /// inverted, its rotation of under 1 degree left out); `mount_z`: the scanner above the road.
-  OxtsTrajectory(std::string oxts, const std::vector<double>& imu_to_velo, double mount_z);
+  /// The rig's `imu_to_velo` places the scanner in the OXTS unit's frame, its `mount_z` above
+  /// the road.
+  OxtsTrajectory(std::string oxts, const KittiRig& rig);
   mrpt::poses::CPose3D robotPose(long index);
 
  private:

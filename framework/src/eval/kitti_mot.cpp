@@ -2,22 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "pedtrack/assignment.h"
 #include "pedtrack/errors.h"
 
 namespace pedtrack::eval {
 namespace {
-
-std::string lower(std::string s) {
-  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 // KITTI counts the class and its neighbour (ignored where found, never a false positive).
 std::string neighbourOf(const std::string& cls) {
@@ -84,6 +77,51 @@ double overlapShare(const KittiTrackRow& t, const KittiTrackRow& d) {
   return w <= 0 || h <= 0 || area <= 0 ? 0 : w * h / area;
 }
 
+// A frame's labels and tracker boxes matched as the evaluation matches them: per pair the 3D IoU
+// (or, with max_distance, the bottom centres' bird's-eye distance, m), truth-major, and the
+// assignment of the pairs within the gate.
+struct FrameMatch {
+  std::vector<double> value;
+  Assignment as;
+};
+
+FrameMatch matchFrame(const std::vector<const KittiTrackRow*>& G,
+                      const std::vector<const KittiTrackRow*>& T, const KittiMotOptions& o) {
+  const bool by_distance = o.max_distance > 0;
+  const int n = int(G.size()), m = int(T.size());
+  FrameMatch fm;
+  fm.value.resize(std::size_t(n) * std::size_t(m));
+  std::vector<double> cost(fm.value.size());
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const auto &a = G[std::size_t(i)]->box, &b = T[std::size_t(j)]->box;
+      const std::size_t k = std::size_t(i * m + j);
+      fm.value[k] = by_distance ? std::hypot(a.x - b.x, a.z - b.z) : kittiIou3d(a, b);
+      cost[k] = by_distance ? fm.value[k] : 1 - fm.value[k];
+    }
+  fm.as = solveAssignment(cost, n, m, by_distance ? o.max_distance : 1 - o.min_iou);
+  return fm;
+}
+
+// A label that is neither required nor a false positive's excuse to miss: too truncated, too
+// occluded, or of the neighbouring class.
+bool ignoredTruth(const KittiTrackRow& g, const KittiMotOptions& o) {
+  const std::string near = neighbourOf(o.object_class);
+  return g.occluded > o.max_occlusion || g.truncated > o.max_truncation ||
+         (!near.empty() && g.type == near);
+}
+
+// An unmatched tracker box that is no false positive: of the neighbouring class, too low in the
+// image, or mostly inside a DontCare area.
+bool ignoredBox(const KittiTrackRow& t, const std::vector<const KittiTrackRow*>& dontcare,
+                const KittiMotOptions& o) {
+  const std::string near = neighbourOf(o.object_class);
+  if ((!near.empty() && t.type == near) || std::abs(t.y2 - t.y1) <= o.min_height) return true;
+  for (const KittiTrackRow* d : dontcare)
+    if (overlapShare(t, *d) > 0.5) return true;
+  return false;
+}
+
 // One pass at a track-score threshold: the counts, and the matched tracks' scores. `ever` is
 // KITTI's `valid` flag per tracker box, which its tool never resets between passes: a box matched
 // once is never ignored again (kept so the figures equal the tool's).
@@ -91,12 +129,10 @@ KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<c
                     const std::vector<std::map<long, double>>& means, double threshold,
                     const KittiMotOptions& o, std::vector<double>* scores) {
   KittiMotCounts c;
-  const std::string near = neighbourOf(o.object_class);
-  const bool by_distance = o.max_distance > 0;
   for (std::size_t si = 0; si < seqs.size(); ++si) {
     const Prepared& p = seqs[si];
-    std::map<long, std::vector<std::pair<long, bool>>>
-        traj;  // truth id -> (track id | -1, ignored)
+    // truth id -> per appearance (track id | -1, ignored)
+    std::map<long, std::vector<std::pair<long, bool>>> traj;
     for (std::size_t f = 0; f < std::size_t(p.frames); ++f) {
       const auto& G = p.truth[f];
       std::vector<const KittiTrackRow*> T;
@@ -104,29 +140,17 @@ KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<c
       for (std::size_t k = 0; k < p.tracks[f].size(); ++k)
         if (means[si].at(p.tracks[f][k]->id) >= threshold)
           T.push_back(p.tracks[f][k]), Ti.push_back(p.track_index[f][k]);
+      const FrameMatch fm = matchFrame(G, T, o);
       const int n = int(G.size()), m = int(T.size());
-      std::vector<double> cost(std::size_t(n * m)), sim(std::size_t(n * m));
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < m; ++j) {
-          const auto &a = G[std::size_t(i)]->box, &b = T[std::size_t(j)]->box;
-          const std::size_t k = std::size_t(i * m + j);
-          sim[k] = by_distance ? std::hypot(a.x - b.x, a.z - b.z) : kittiIou3d(a, b);
-          cost[k] = by_distance ? sim[k] : 1 - sim[k];
-        }
-      const Assignment as =
-          n && m ? solveAssignment(cost, n, m, by_distance ? o.max_distance : 1 - o.min_iou)
-                 : Assignment{std::vector<int>(std::size_t(n), -1),
-                              std::vector<int>(std::size_t(m), -1), 0};
       long ignored_fn = 0, ignored_tp = 0, ignored_trk = 0, matched = 0;
       for (int i = 0; i < n; ++i) {
         const KittiTrackRow& g = *G[std::size_t(i)];
-        const bool ignored = g.occluded > o.max_occlusion || g.truncated > o.max_truncation ||
-                             (!near.empty() && g.type == near);
-        const int j = as.row_to_col.empty() ? -1 : as.row_to_col[std::size_t(i)];
+        const bool ignored = ignoredTruth(g, o);
+        const int j = fm.as.row_to_col[std::size_t(i)];
         if (j >= 0) {
           ++matched;
           ignored_tp += ignored;
-          c.sum_similarity += sim[std::size_t(i * m + j)];
+          c.sum_similarity += fm.value[std::size_t(i * m + j)];
           ever[si][Ti[std::size_t(j)]] = 1;
           if (scores) scores->push_back(means[si].at(T[std::size_t(j)]->id));
         } else {
@@ -134,15 +158,9 @@ KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<c
         }
         traj[g.id].push_back({j >= 0 ? T[std::size_t(j)]->id : -1, ignored});
       }
-      for (int j = 0; j < m; ++j) {
-        if ((!as.col_to_row.empty() && as.col_to_row[std::size_t(j)] >= 0) ||
-            ever[si][Ti[std::size_t(j)]])
-          continue;
-        const KittiTrackRow& t = *T[std::size_t(j)];
-        bool ignore = (!near.empty() && t.type == near) || std::abs(t.y2 - t.y1) <= o.min_height;
-        for (const KittiTrackRow* d : p.dontcare[f]) ignore = ignore || overlapShare(t, *d) > 0.5;
-        ignored_trk += ignore;
-      }
+      for (int j = 0; j < m; ++j)
+        if (fm.as.col_to_row[std::size_t(j)] < 0 && !ever[si][Ti[std::size_t(j)]])
+          ignored_trk += ignoredBox(*T[std::size_t(j)], p.dontcare[f], o);
       c.tp += matched;
       c.ignored_tp += ignored_tp;
       c.fn += n - matched - ignored_fn;
@@ -191,47 +209,28 @@ KittiMotCounts pass(const std::vector<Prepared>& seqs, std::vector<std::vector<c
 // One sequence's frames for HOTA: every track, the ignored labels and what they or the ignore
 // rules account for left out (TrackEval's KITTI preprocessing, with this evaluation's rules).
 std::vector<HotaFrame> hotaFrames(const Prepared& p, const KittiMotOptions& o) {
-  const std::string near = neighbourOf(o.object_class);
-  const bool by_distance = o.max_distance > 0;
   std::vector<HotaFrame> out(std::size_t(std::max(0L, p.frames)));
   for (std::size_t f = 0; f < out.size(); ++f) {
     const auto &G = p.truth[f], &T = p.tracks[f];
+    const FrameMatch fm = matchFrame(G, T, o);
     const int n = int(G.size()), m = int(T.size());
-    std::vector<double> cost(std::size_t(n * m)), sim(std::size_t(n * m));
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < m; ++j) {
-        const auto &a = G[std::size_t(i)]->box, &b = T[std::size_t(j)]->box;
-        const std::size_t k = std::size_t(i * m + j);
-        const double d = std::hypot(a.x - b.x, a.z - b.z);
-        sim[k] = by_distance ? std::max(0.0, 1 - d / o.max_distance) : kittiIou3d(a, b);
-        cost[k] = by_distance ? d : 1 - sim[k];
-      }
-    const Assignment as =
-        n && m ? solveAssignment(cost, n, m, by_distance ? o.max_distance : 1 - o.min_iou)
-               : Assignment{};
-    const auto ignoredTruth = [&](const KittiTrackRow& g) {
-      return g.occluded > o.max_occlusion || g.truncated > o.max_truncation ||
-             (!near.empty() && g.type == near);
-    };
     std::vector<int> kept_truth, kept_track;
     for (int i = 0; i < n; ++i)
-      if (!ignoredTruth(*G[std::size_t(i)])) kept_truth.push_back(i);
+      if (!ignoredTruth(*G[std::size_t(i)], o)) kept_truth.push_back(i);
     for (int j = 0; j < m; ++j) {
-      const int i = as.col_to_row.empty() ? -1 : as.col_to_row[std::size_t(j)];
-      if (i >= 0) {
-        if (!ignoredTruth(*G[std::size_t(i)])) kept_track.push_back(j);
-        continue;
-      }
-      const KittiTrackRow& t = *T[std::size_t(j)];
-      bool ignore = (!near.empty() && t.type == near) || std::abs(t.y2 - t.y1) <= o.min_height;
-      for (const KittiTrackRow* d : p.dontcare[f]) ignore = ignore || overlapShare(t, *d) > 0.5;
-      if (!ignore) kept_track.push_back(j);
+      const int i = fm.as.col_to_row[std::size_t(j)];
+      if (i >= 0 ? !ignoredTruth(*G[std::size_t(i)], o)
+                 : !ignoredBox(*T[std::size_t(j)], p.dontcare[f], o))
+        kept_track.push_back(j);
     }
     HotaFrame& h = out[f];
     for (int i : kept_truth) h.truths.push_back(G[std::size_t(i)]->id);
     for (int j : kept_track) h.tracks.push_back(T[std::size_t(j)]->id);
     for (int i : kept_truth)
-      for (int j : kept_track) h.similarity.push_back(sim[std::size_t(i * m + j)]);
+      for (int j : kept_track) {
+        const double v = fm.value[std::size_t(i * m + j)];
+        h.similarity.push_back(o.max_distance > 0 ? std::max(0.0, 1 - v / o.max_distance) : v);
+      }
   }
   return out;
 }
@@ -313,51 +312,6 @@ KittiMotResult evaluateKittiMot(std::vector<KittiSequence> sequences, const Kitt
   for (const Prepared& p : seqs) per_sequence.push_back(hota(hotaFrames(p, o)));
   if (!per_sequence.empty()) res.hota = combineHota(per_sequence);
   return res;
-}
-
-std::vector<KittiTrackRow> readKittiTrackFile(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw DataError(path + ": cannot open");
-  std::vector<KittiTrackRow> out;
-  std::string line;
-  for (long n = 1; std::getline(f, line); ++n) {
-    std::istringstream is(line);
-    std::vector<std::string> v;
-    for (std::string s; is >> s;) v.push_back(s);
-    if (v.empty()) continue;
-    const std::string where = path + ": line " + std::to_string(n);
-    if (v.size() != 17 && v.size() != 18)
-      throw DataError(where +
-                      ": expected 17 or 18 values (frame track_id type truncated occluded "
-                      "alpha x1 y1 x2 y2 h w l x y z rotation_y [score]), got " +
-                      std::to_string(v.size()));
-    std::vector<double> d(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (i == 2) continue;
-      char* end = nullptr;
-      d[i] = std::strtod(v[i].c_str(), &end);
-      if (end == v[i].c_str() || *end || !std::isfinite(d[i]))
-        throw DataError(where + ": value " + std::to_string(i + 1) + " '" + v[i] +
-                        "' is not a number");
-    }
-    if (d[0] < 0 || d[0] > 1e6 || d[0] != std::floor(d[0]))
-      throw DataError(where + ": frame '" + v[0] + "' is not a frame number (0 ... 1,000,000)");
-    if (d[1] < -1 || d[1] > 1e12 || d[1] != std::floor(d[1]))
-      throw DataError(where + ": track id '" + v[1] + "' is not an id (-1 or a whole number)");
-    // KITTI: truncated 0-2 (tracking) or 0-1 (objects), occluded 0-3; DontCare -1.
-    for (std::size_t k : {std::size_t(3), std::size_t(4)})
-      if (d[k] < -1 || d[k] > 3)
-        throw DataError(where + ": " + (k == 3 ? "truncated" : "occluded") + " '" + v[k] +
-                        "' is out of KITTI's range (-1 ... 3)");
-    KittiTrackRow r;
-    r.frame = long(d[0]), r.id = long(d[1]), r.type = lower(v[2]);
-    r.truncated = int(d[3]), r.occluded = int(d[4]);
-    r.x1 = d[6], r.y1 = d[7], r.x2 = d[8], r.y2 = d[9];
-    r.box = {d[10], d[11], d[12], d[13], d[14], d[15], d[16]};
-    if (v.size() == 18) r.score = d[17];
-    out.push_back(r);
-  }
-  return out;
 }
 
 }  // namespace pedtrack::eval

@@ -3,28 +3,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 
 #include "pedtrack/errors.h"
 #include "pedtrack/text.h"
 
 namespace pedtrack::detections {
 namespace {
-
-std::vector<std::string> fields(const std::string& line, bool commas) {
-  std::vector<std::string> f;
-  if (commas) {
-    std::string s;
-    std::istringstream is(line);
-    while (std::getline(is, s, ',')) f.push_back(trim(s));
-    if (!line.empty() && line.back() == ',') f.emplace_back();
-  } else {
-    std::istringstream is(line);
-    std::string s;
-    while (is >> s) f.push_back(s);
-  }
-  return f;
-}
 
 double number(const std::string& s, const std::string& where, const char* what) {
   char* end = nullptr;
@@ -48,6 +32,12 @@ std::string className(const std::string& type) {
   return type;
 }
 
+// A detector's box must be one: its sizes in (0, 100) m.
+void checkBox(const KittiCameraBox& b, const std::string& where) {
+  if (!(b.h > 0 && b.w > 0 && b.l > 0 && b.h < 100 && b.w < 100 && b.l < 100))
+    throw DataError(where + ": box size h w l must lie in (0, 100) m");
+}
+
 }  // namespace
 
 std::map<long, std::vector<KittiDetection>> readKittiDetections(const std::string& path) {
@@ -56,47 +46,36 @@ std::map<long, std::vector<KittiDetection>> readKittiDetections(const std::strin
   std::map<long, std::vector<KittiDetection>> out;
   std::string line;
   for (long n = 1; std::getline(f, line); ++n) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (trim(line).empty()) continue;
-    const std::string where = path + ": line " + std::to_string(n);
-    const bool commas = line.find(',') != std::string::npos;
-    const auto v = fields(line, commas);
-    KittiDetection d;
-    std::size_t box_at = 0;  // where h w l x y z rotation_y start
-    long frame = 0;
-    if (commas) {
-      if (v.size() != 15)
-        throw DataError(where +
-                        ": expected 15 comma-separated values (frame,type,x1,y1,x2,y2,"
-                        "score,h,w,l,x,y,z,rotation_y,alpha), got " +
-                        std::to_string(v.size()));
-      frame = frameNumber(v[0], where);
-      d.type = className(v[1]);
-      d.score = number(v[6], where, "score");
-      box_at = 7;
-    } else {
-      if (v.size() != 17 && v.size() != 18)
-        throw DataError(where +
-                        ": expected 17 or 18 values (frame track_id type truncated "
-                        "occluded alpha x1 y1 x2 y2 h w l x y z rotation_y [score]), got " +
-                        std::to_string(v.size()));
-      frame = frameNumber(v[0], where);
-      d.type = v[2];
-      if (v.size() == 18) d.score = number(v[17], where, "score");
-      box_at = 10;
+    // KITTI tracking's own layout (labels, a tracker's results): read as `pedtrack eval` reads it.
+    if (line.find(',') == std::string::npos) {
+      for (const KittiTrackRow& r : readKittiTrackFile(path)) {
+        if (r.type == "dontcare") continue;
+        checkBox(r.box, path + ": frame " + std::to_string(r.frame));
+        out[r.frame].push_back({r.type, r.box, r.has_score ? r.score : 1});
+      }
+      return out;
     }
-    if (d.type == "DontCare") continue;
+    const std::string where = path + ": line " + std::to_string(n);
+    const auto v = splitFields(line, ',');
+    if (v.size() != 15)
+      throw DataError(where +
+                      ": expected 15 comma-separated values (frame,type,x1,y1,x2,y2,"
+                      "score,h,w,l,x,y,z,rotation_y,alpha), got " +
+                      std::to_string(v.size()));
+    KittiDetection d;
+    d.type = className(v[1]);
+    d.score = number(v[6], where, "score");
     KittiCameraBox& b = d.box;
-    b.h = number(v[box_at], where, "h");
-    b.w = number(v[box_at + 1], where, "w");
-    b.l = number(v[box_at + 2], where, "l");
-    b.x = number(v[box_at + 3], where, "x");
-    b.y = number(v[box_at + 4], where, "y");
-    b.z = number(v[box_at + 5], where, "z");
-    b.ry = number(v[box_at + 6], where, "rotation_y");
-    if (!(b.h > 0 && b.w > 0 && b.l > 0 && b.h < 100 && b.w < 100 && b.l < 100))
-      throw DataError(where + ": box size h w l must lie in (0, 100) m");
-    out[frame].push_back(d);
+    b.h = number(v[7], where, "h");
+    b.w = number(v[8], where, "w");
+    b.l = number(v[9], where, "l");
+    b.x = number(v[10], where, "x");
+    b.y = number(v[11], where, "y");
+    b.z = number(v[12], where, "z");
+    b.ry = number(v[13], where, "rotation_y");
+    checkBox(b, where);
+    out[frameNumber(v[0], where)].push_back(d);
   }
   return out;
 }
@@ -107,7 +86,7 @@ std::map<long, CsvFrame> readDetectionsCsv(const std::string& path) {
   std::string line;
   if (!std::getline(f, line)) throw DataError(path + ": empty (no header line)");
   if (!line.empty() && line.back() == '\r') line.pop_back();
-  const auto header = fields(line, true);
+  const auto header = splitFields(line, ',');
   const auto col = [&](const char* name) -> int {
     for (std::size_t i = 0; i < header.size(); ++i)
       if (header[i] == name) return int(i);
@@ -126,7 +105,7 @@ std::map<long, CsvFrame> readDetectionsCsv(const std::string& path) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (trim(line).empty()) continue;
     const std::string where = path + ": line " + std::to_string(n);
-    const auto v = fields(line, true);
+    const auto v = splitFields(line, ',');
     if (v.size() != header.size())
       throw DataError(where + ": " + std::to_string(v.size()) + " values for " +
                       std::to_string(header.size()) + " columns");

@@ -7,22 +7,22 @@
 #include <vector>
 
 #include "pedtrack/frame.h"
-#include "pedtrack/kitti_calib.h"
+#include "pedtrack/kitti_tracking_file.h"
 
 namespace pedtrack::detections {
 
 /// One detection of a KITTI file: its class, box (camera frame) and the detector's score.
 struct KittiDetection {
-  std::string type;  ///< Pedestrian, Car, Cyclist, ... (AB3DMOT's 1, 2, 3 read as these)
+  std::string type;  ///< Pedestrian, Car, ... (AB3DMOT's 1, 2, 3; tracking files': lower case)
   KittiCameraBox box;
   double score = 1;  ///< label lines, which have none: 1
 };
 
-/// A KITTI detection file, by frame. Each line is either AB3DMOT's `frame,type,x1,y1,x2,y2,score,
-/// h,w,l,x,y,z,rotation_y,alpha` (comma separated; type 1 pedestrian, 2 car, 3 cyclist) or KITTI
-/// tracking's `frame track_id type truncated occluded alpha x1 y1 x2 y2 h w l x y z rotation_y
-/// [score]` (space separated: labels, or another tracker's results). DontCare lines are left
-/// out. Throws DataError naming the file and line at fault.
+/// A KITTI detection file, by frame: AB3DMOT's lines `frame,type,x1,y1,x2,y2,score,h,w,l,x,y,z,
+/// rotation_y,alpha` (comma separated; type 1 pedestrian, 2 car, 3 cyclist), or, when its first
+/// line has no comma, a KITTI tracking label / results file (readKittiTrackFile; a line without
+/// a score scores 1). DontCare lines are left out. Throws DataError naming the file and line
+/// (or frame) at fault.
 std::map<long, std::vector<KittiDetection>> readKittiDetections(const std::string& path);
 
 /// One frame of a detections.csv: its time and detections (fixed frame).

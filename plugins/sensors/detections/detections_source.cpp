@@ -2,6 +2,8 @@
 // trackers run behind a detector of the user's own (a deep 3D detector, a camera): no points, no
 // segmentation, no classifier. KITTI detection files (camera frame, turned into the robot frame by
 // the sequence's calibration) also get their tracks written back as kitti_tracks.txt.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -24,11 +26,9 @@ struct DetectionsParams {
   std::string format = "auto";
   std::string calib = "auto";
   std::vector<std::string> classes{"Pedestrian"};
-  double scan_rate = 10;
-  double mount_z = 1.73;
+  kitti::KittiRig rig;
   long frames = 0;
   std::string oxts = "none";
-  std::vector<double> imu_to_velo{0.81, -0.32, 0.80};
   ReplayRateParams replay;
 };
 
@@ -49,30 +49,15 @@ const ParamTable<DetectionsParams>& table() {
                 "calib/NAME beside the detections' folder (KITTI's layout)")
           .text(&P::classes, "classes",
                 "KITTI: the classes replayed (Pedestrian, Car, Cyclist, Person_sitting, ...)")
-          .real(&P::scan_rate, "scan_rate", "Hz", 0.1, 1000,
-                "KITTI: frames per second (KITTI: 10); frame n is at n / scan_rate s")
-          .real(&P::mount_z, "mount_z", "m", 0, 10,
-                "KITTI: the Velodyne above the road (1.73 m); the robot frame is on the road "
-                "under it")
+          .include(&P::rig, kitti::kittiRigTable())
           .integer(&P::frames, "frames", "", 0, 1e6,
                    "KITTI: frames in the sequence (frames after the last detection are empty); "
                    "0: up to the last frame with a detection")
           .text(&P::oxts, "oxts",
                 "KITTI: the vehicle's OXTS records (tracking oxts/SSSS.txt, a line per frame) for "
                 "its motion; none: the sensor is the fixed frame")
-          .vector(&P::imu_to_velo, "imu_to_velo", "m", 3, -10, 10,
-                  "KITTI: where the Velodyne is in the OXTS unit's frame (Tr_imu_to_velo "
-                  "inverted; its rotation, under 1 degree, left out)")
           .include(&P::replay, replayRateTable());
   return t;
-}
-
-// KITTI's layout: DATA/<detector>/SSSS.txt beside DATA/calib/SSSS.txt.
-std::string findCalib(const std::string& dets) {
-  const fs::path p(dets);
-  const fs::path c = p.parent_path().parent_path() / "calib" / p.filename();
-  std::error_code ec;
-  return fs::is_regular_file(c, ec) ? c.string() : "";
 }
 
 class DetectionsSource : public Sensor {
@@ -85,7 +70,7 @@ class DetectionsSource : public Sensor {
       next_csv_ = csv_frames_.begin();
       return;
     }
-    const std::string calib = p_.calib == "auto" ? findCalib(p_.file) : p_.calib;
+    const std::string calib = p_.calib == "auto" ? kittiCalibBeside(p_.file) : p_.calib;
     if (calib.empty())
       throw ConfigError(table().where(ps, &DetectionsParams::calib) + ": no calibration beside '" +
                         p_.file + "' (looked for ../calib/" +
@@ -102,7 +87,7 @@ class DetectionsSource : public Sensor {
       if (!fs::exists(p_.oxts))
         throw ConfigError(table().where(ps, &DetectionsParams::oxts) + ": '" + p_.oxts +
                           "' does not exist");
-      oxts_.emplace(p_.oxts, p_.imu_to_velo, p_.mount_z);
+      oxts_.emplace(p_.oxts, p_.rig);
     }
   }
 
@@ -111,7 +96,7 @@ class DetectionsSource : public Sensor {
     if (csv_ && !out_dir.empty()) fs::remove(fs::path(out_dir) / "kitti_tracks.txt");
     if (!csv_ && !out_dir.empty())
       writer_ = std::make_unique<KittiTracksWriter>(out_dir + "/kitti_tracks.txt", calib_,
-                                                    p_.mount_z, resultClass());
+                                                    p_.rig.mount_z, resultClass());
   }
 
   void finish() override {
@@ -127,7 +112,7 @@ class DetectionsSource : public Sensor {
   bool detectionsOnly() const override { return true; }
 
   void results(const Frame& f) override {
-    if (writer_) writer_->write(std::lround(f.t * p_.scan_rate), f);
+    if (writer_) writer_->write(std::lround(f.t * p_.rig.scan_rate), f);
   }
 
   double progress() const override {
@@ -141,9 +126,16 @@ class DetectionsSource : public Sensor {
   }
 
  private:
+  // KITTI's class names, in any case (tracking files are read in lower case).
   bool wanted(const std::string& type) const {
+    const auto same = [](const std::string& a, const std::string& b) {
+      return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+             });
+    };
     for (const auto& c : p_.classes)
-      if (c == type) return true;
+      if (same(c, type)) return true;
     return false;
   }
   std::string resultClass() const {
@@ -152,12 +144,12 @@ class DetectionsSource : public Sensor {
 
   bool nextKitti(Frame& frame) {
     if (frame_ > last_) return false;
-    frame.t = double(frame_) / p_.scan_rate;
+    frame.t = double(frame_) / p_.rig.scan_rate;
     if (oxts_) {
       frame.robot_pose = oxts_->robotPose(frame_);
       frame.has_odometry = true;
     }
-    const mrpt::poses::CPose3D mount(0, 0, p_.mount_z, 0, 0, 0);
+    const mrpt::poses::CPose3D mount(0, 0, p_.rig.mount_z, 0, 0, 0);
     frame.sensor_pose = frame.robot_pose + mount;
     const auto it = kitti_.find(frame_);
     if (it != kitti_.end())
@@ -165,7 +157,7 @@ class DetectionsSource : public Sensor {
         const Eigen::Vector3d velo = calib_.veloFromRect({k.box.x, k.box.y, k.box.z});
         Detection d;
         double z = 0;
-        frame.robot_pose.composePoint(velo.x(), velo.y(), velo.z() + p_.mount_z, d.x, d.y, z);
+        frame.robot_pose.composePoint(velo.x(), velo.y(), velo.z() + p_.rig.mount_z, d.x, d.y, z);
         d.score = k.score;
         d.yaw = std::remainder(veloYawFromRotationY(k.box.ry) + frame.robot_pose.yaw(), 2 * M_PI);
         d.box = {z, k.box.h, k.box.w, k.box.l};

@@ -18,10 +18,8 @@ namespace {
 
 struct KittiParams {
   std::string file;
-  double scan_rate = 10;
-  double mount_z = 1.73;
+  KittiRig rig;
   std::string oxts = "auto";
-  std::vector<double> imu_to_velo{0.81, -0.32, 0.80};
   ReplayRateParams replay;
 };
 
@@ -33,18 +31,11 @@ const ParamTable<KittiParams>& table() {
                      "a KITTI Velodyne scan (.bin) or a folder of them, replayed in name order "
                      "(raw velodyne_points/data, tracking velodyne/SSSS, object velodyne)",
                      /*folder_ok=*/true)
-          .real(&P::scan_rate, "scan_rate", "Hz", 0.1, 1000,
-                "scans per second where no timestamps.txt (KITTI raw) gives their times")
-          .real(&P::mount_z, "mount_z", "m", 0, 10,
-                "the scanner's height above the road (KITTI's HDL-64: 1.73 m); the robot frame "
-                "is on the road under it")
+          .include(&P::rig, kittiRigTable())
           .text(&P::oxts, "oxts",
                 "the vehicle's OXTS records: auto (raw oxts/data beside velodyne_points, or "
                 "tracking oxts/SSSS.txt), none (no motion known), a folder (a file per scan) or "
                 "a file (a line per scan)")
-          .vector(&P::imu_to_velo, "imu_to_velo", "m", 3, -10, 10,
-                  "where the scanner is in the OXTS unit's frame (KITTI's Tr_imu_to_velo "
-                  "inverted; its rotation, under 1 degree, is left out)")
           .include(&P::replay, replayRateTable());
   return t;
 }
@@ -54,13 +45,13 @@ class KittiSource : public Sensor {
   explicit KittiSource(const PluginContext& ctx)
       : KittiSource(table().read(ctx.params), table().where(ctx.params, &KittiParams::oxts)) {}
   KittiSource(const KittiParams& p, const std::string& oxts_where)
-      : scans_(listScans(p.file, p.scan_rate)),
-        mount_(0, 0, p.mount_z, 0, 0, 0),
+      : scans_(listScans(p.file, p.rig.scan_rate)),
+        mount_(0, 0, p.rig.mount_z, 0, 0, 0),
         realtime_(p.replay.realtime) {
     const std::string oxts = p.oxts == "auto" ? findOxts(p.file) : p.oxts == "none" ? "" : p.oxts;
     if (p.oxts != "auto" && p.oxts != "none" && !std::filesystem::exists(p.oxts))
       throw ConfigError(oxts_where + ": '" + p.oxts + "' does not exist");
-    if (!oxts.empty()) oxts_.emplace(oxts, p.imu_to_velo, p.mount_z);
+    if (!oxts.empty()) oxts_.emplace(oxts, p.rig);
   }
 
   bool next(Frame& frame) override {

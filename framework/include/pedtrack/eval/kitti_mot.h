@@ -11,22 +11,12 @@
 
 #include "pedtrack/eval/hota.h"
 #include "pedtrack/eval/kitti_boxes.h"
+#include "pedtrack/kitti_tracking_file.h"
 
 namespace pedtrack::eval {
 
-/// One line of a KITTI tracking label or results file.
-struct KittiTrackRow {
-  long frame = 0, id = -1;
-  std::string type;  ///< lower case: pedestrian, person_sitting, dontcare, ...
-  int truncated = 0, occluded = 0;
-  double x1 = 0, y1 = 0, x2 = 0, y2 = 0;  ///< the image box, px
-  KittiCameraBox box;
-  double score = -1;  ///< results: the 18th value (-1 when absent)
-};
-
-/// A label file (17 values a line) or a results file (17 or 18). Throws DataError naming the file
-/// and line at fault.
-std::vector<KittiTrackRow> readKittiTrackFile(const std::string& path);
+using pedtrack::KittiTrackRow;
+using pedtrack::readKittiTrackFile;
 
 struct KittiSequence {
   std::string name;  ///< errors name it: the results file
