@@ -19,12 +19,14 @@ foreach(pkg pluginlib class_loader rcpputils rcutils ament_index_cpp)
     list(APPEND _ros_includes ${PEDTRACK_INC_${pkg}})
   endif()
 endforeach()
-# The bag structure check run before rosbag_storage reads a bag (pedtrack/bag_check.h) and the
+# The bag structure check run before rosbag_storage reads a bag (pedtrack/bag_check.h), the
+# re-indexing of a bag cut short (pedtrack/bag_recover.h) and the
 # message count check run before roscpp deserializes a message (pedtrack/ros_wire_check.h): used by
 # the rosbag source plugin and by `pedtrack eval --truth BAG`, so a static library of its own.
 find_library(PEDTRACK_BZ2 NAMES bz2 REQUIRED)
 find_library(PEDTRACK_ROSLZ4 NAMES roslz4 REQUIRED)
 add_library(pedtrack_bag_check STATIC ${PROJECT_SOURCE_DIR}/framework/src/bag_check.cpp
+  ${PROJECT_SOURCE_DIR}/framework/src/bag_recover.cpp
   ${PROJECT_SOURCE_DIR}/framework/src/ros_wire_check.cpp)
 set_target_properties(pedtrack_bag_check PROPERTIES POSITION_INDEPENDENT_CODE ON)
 target_link_libraries(pedtrack_bag_check PUBLIC pedtrack_core PRIVATE ${PEDTRACK_BZ2}

@@ -470,8 +470,11 @@ int evalCommand(const std::vector<std::string>& args) {
     a.threshold = a.tracks.empty() ? 0.1 : bag_tracks && !a.people_bag ? 0.35 : 0.75;
   validate(a, vm);
   if (!a.truth_points.empty()) return evalSegmentation(a);
-  if (bag_tracks) return evalTracksOnBag(a);
-  return a.tracks.empty() ? evalDetections(a) : evalTracking(a);
+  const int code = bag_tracks         ? evalTracksOnBag(a)
+                   : a.tracks.empty() ? evalDetections(a)
+                                      : evalTracking(a);
+  // A truth bag cut short was scored on what it holds (and warned about): the score is partial.
+  return code == exit_code::kOk && !truthBagsCutShort().empty() ? exit_code::kFailure : code;
 }
 
 }  // namespace pedtrack::cli

@@ -50,9 +50,15 @@ int importCommand(const std::vector<std::string>& args) {
   std::size_t frames = 0, observations = 0;
   bool has_odometry = false;
   Frame frame;
+  std::string error;  // the input ended in bad data: what was read before it is written
   while (!Pipeline::stopRequested()) {
     frame = Frame();
-    if (!pipeline.source().next(frame)) break;
+    try {
+      if (!pipeline.source().next(frame)) break;
+    } catch (const DataError& e) {
+      error = e.what();
+      break;
+    }
     has_odometry =
         has_odometry || frame.robot_pose.norm() > 0 ||
         frame.robot_pose.getRotationMatrix() != mrpt::poses::CPose3D().getRotationMatrix();
@@ -70,6 +76,10 @@ int importCommand(const std::vector<std::string>& args) {
   progress.done(frames);
   std::fprintf(stderr, "wrote %zu observations (%zu frames%s) to %s\n", observations, frames,
                has_odometry ? ", with odometry" : "", out.c_str());
+  if (!error.empty()) {
+    std::cerr << "error: " << error << "\n";
+    return exit_code::kFailure;
+  }
   return exit_code::kOk;
 }
 

@@ -7,11 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <set>
 
-#include "pedtrack/bag_check.h"
+#include "pedtrack/bag_open.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/ros_checked_message.h"
 #include "pedtrack/text.h"
@@ -24,10 +25,17 @@ const std::string kLaserScan = "sensor_msgs/LaserScan";
 const std::string kPoseArray = "geometry_msgs/PoseArray";
 const std::string kPerson = "leg_tracker/Person";
 
+std::set<std::string>& cutShort() {
+  static std::set<std::string> paths;
+  return paths;
+}
+
 void openBag(rosbag::Bag& bag, const std::string& path) {
   try {
-    checkBagStructure(path);  // rosbag_storage trusts the lengths in the file
-    bag.open(path, rosbag::bagmode::Read);
+    if (const auto kept = openBagForReading(bag, path)) {
+      if (cutShort().insert(path).second)  // one warning a bag, however often it is opened
+        std::cerr << "warning: --truth " << recoveryWarning(path, *kept) << "\n";
+    }
   } catch (const std::exception& e) {
     throw ConfigError("--truth: cannot open bag '" + path + "': " + oneLine(e.what()));
   }
@@ -75,6 +83,10 @@ std::vector<eval::Object> toObjects(const geometry_msgs::PoseArray& a) {
 }
 
 }  // namespace
+
+std::vector<std::string> truthBagsCutShort() {
+  return std::vector<std::string>(cutShort().begin(), cutShort().end());
+}
 
 BagLabels readBagLabels(const std::string& path, const std::string& scan_topic,
                         const std::string& labels_topic) {

@@ -38,4 +38,8 @@ BagPeople readBagPeople(const std::string& path, const std::string& scan_topic,
 /// The bag's topic of leg_tracker/Person messages, or "" when it has none.
 std::string bagPeopleTopic(const std::string& path);
 
+/// The truth bags read so far that were cut short (or unindexed) and re-indexed: each was warned
+/// about once; the command exits 1 after scoring what they hold.
+std::vector<std::string> truthBagsCutShort();
+
 }  // namespace pedtrack::cli

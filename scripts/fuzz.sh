@@ -42,26 +42,35 @@ find "$build/Testing/work" \( -name 'kitti_tracks.txt' -o -name 'dets.txt' -o -n
 # ROS bags: the small ones test_rosbag writes with rosbag_storage (scans, /tf, odometry; the
 # test suite runs before this in scripts/check.sh). No bag writer ships for Python here.
 find "$build/Testing/work" -name '*.bag' -size -64k -exec cp {} "$work/rosbag/" \; 2>/dev/null || true
+# The chunk scan of bags cut short: the same bags, whole and cut at half.
+mkdir -p "$work/bag_recover"
+for b in "$work"/rosbag/*.bag; do
+  [ -f "$b" ] || continue
+  cp "$b" "$work/bag_recover/"
+  head -c $(( $(stat -c %s "$b") / 2 )) "$b" > "$work/bag_recover/half-$(basename "$b")"
+done
 [ -n "$(ls "$work/rosbag")" ] || echo "fuzz.sh: no small bag under $build/Testing/work (run the tests first): fuzz_rosbag starts without a seed"
 
 declare -A max_len=([fuzz_pipeline_ini]=16384 [fuzz_scenario]=16384 [fuzz_csv]=16384
   [fuzz_model]=131072 [fuzz_velodyne]=12060 [fuzz_rawlog]=65536 [fuzz_rosbag]=65536
-  [fuzz_scip]=16384 [fuzz_kitti]=16384)
+  [fuzz_bag_recover]=65536 [fuzz_scip]=16384 [fuzz_kitti]=16384)
 declare -A corpus=([fuzz_pipeline_ini]=pipeline_ini [fuzz_scenario]=scenario [fuzz_csv]=csv
   [fuzz_model]=model [fuzz_velodyne]=velodyne [fuzz_rawlog]=rawlog [fuzz_rosbag]=rosbag
-  [fuzz_scip]=scip [fuzz_kitti]=kitti)
+  [fuzz_bag_recover]=bag_recover [fuzz_scip]=scip [fuzz_kitti]=kitti)
 # Memory limits. MRPT's archive reader and rosbag_storage trust 32-bit length fields: a corrupt
 # string or record header makes them allocate (MRPT: and zero-fill) up to 4 GiB before the read
 # fails and the source reports the file as broken. That is a spike, not a crash, and it is in
-# those libraries, so these two targets allow one allocation of 4 GiB; the others 2 GB. Their
+# those libraries, so the targets that read bags or rawlogs allow one allocation of 4 GiB (the
+# chunk scan of fuzz_bag_recover decompresses a chunk of up to 1 GiB); the others 2 GB. Their
 # RSS limit leaves room for the fuzzer's own memory beside that spike: fuzz_rawlog peaked at
 # 4,537 MB (a 4 GiB string plus ~440 MB of ASan and corpus), within 163 MB of the old 4,700.
 declare -A limits=([fuzz_rawlog]="-malloc_limit_mb=4200 -rss_limit_mb=5632"
-  [fuzz_rosbag]="-malloc_limit_mb=4200 -rss_limit_mb=5632")
+  [fuzz_rosbag]="-malloc_limit_mb=4200 -rss_limit_mb=5632"
+  [fuzz_bag_recover]="-malloc_limit_mb=4200 -rss_limit_mb=5632")
 status=0
 printf '%-18s %8s %10s %8s  %s\n' target seconds runs corpus result
 for target in fuzz_pipeline_ini fuzz_scenario fuzz_csv fuzz_model fuzz_velodyne fuzz_rawlog \
-  fuzz_rosbag fuzz_scip fuzz_kitti; do
+  fuzz_rosbag fuzz_bag_recover fuzz_scip fuzz_kitti; do
   [ -x "$bin/$target" ] || { printf '%-18s not built\n' "$target"; continue; }
   log=$work/$target.log
   start=$(date +%s)

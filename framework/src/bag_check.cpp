@@ -3,42 +3,17 @@
 #include <bzlib.h>
 #include <roslz4/lz4s.h>
 
-#include <cstdint>
-#include <cstring>
 #include <fstream>
-#include <map>
 #include <set>
-#include <vector>
 
+#include "bag_records.h"
 #include "pedtrack/errors.h"
 
 namespace pedtrack {
-namespace {
+namespace bag {
 
-constexpr char kMagic[] = "#ROSBAG V2.0\n";
-constexpr std::size_t kMagicSize = sizeof(kMagic) - 1;
-// Record ops (the bag format 2.0 specification).
-constexpr std::uint8_t kMessage = 0x02, kBagHeader = 0x03, kIndex = 0x04, kChunk = 0x05,
-                       kChunkInfo = 0x06, kConnection = 0x07;
-// rosbag_storage decompresses a chunk into one buffer of its stated size; real chunks are well
-// under 100 MB (rosbag record writes 768 KB).
-constexpr std::uint32_t kMaxChunk = 1u << 30;
-
-struct Fault {
-  std::string what;
-  std::uint64_t at;
-};
-
-std::uint32_t u32(const std::uint8_t* p) {
-  std::uint32_t v;
-  std::memcpy(&v, p, 4);
-  return v;
-}
-
-// A header's fields, each a 4-byte length and "name=value", must tile it exactly (what
-// ros::Header::parse assumes). `at` is the header's position, for the message.
 std::map<std::string, std::string> fields(const std::uint8_t* h, std::uint32_t size,
-                                          std::uint64_t at) {
+                                          std::uint64_t at, bool strict) {
   std::map<std::string, std::string> out;
   std::uint32_t i = 0;
   while (i < size) {
@@ -47,33 +22,27 @@ std::map<std::string, std::string> fields(const std::uint8_t* h, std::uint32_t s
     if (len > size - i - 4) throw Fault{"a header field longer than its header", at + i};
     const char* f = reinterpret_cast<const char*>(h + i + 4);
     const char* eq = static_cast<const char*>(std::memchr(f, '=', len));
+    if (strict && (!eq || len > 1000000))
+      throw Fault{eq ? "a header field over 1 MB" : "a header field without '='", at + i};
     if (eq) out[std::string(f, eq)] = std::string(eq + 1, f + len);
     i += 4 + len;
   }
   return out;
 }
 
-struct Record {
-  std::uint8_t op = 0;
-  std::map<std::string, std::string> fields;
-  std::uint64_t data_at = 0;  // position of its data
-  std::uint32_t data_size = 0;
-  std::uint64_t end = 0;  // position after it
-};
-
-// The record at `at` of the bytes [base, base + size) (positions counted from `origin`).
-Record record(const std::uint8_t* base, std::uint64_t size, std::uint64_t at,
-              std::uint64_t origin) {
+Record record(const std::uint8_t* base, std::uint64_t size, std::uint64_t at, std::uint64_t origin,
+              bool strict) {
   if (size - at < 4) throw Fault{"a record cut off", origin + at};
   const std::uint32_t hl = u32(base + at);
   if (size - at - 4 < std::uint64_t(hl) + 4)
     throw Fault{"a record header past the end", origin + at};
   Record r;
-  r.fields = fields(base + at + 4, hl, origin + at + 4);
+  r.fields = fields(base + at + 4, hl, origin + at + 4, strict);
   const auto op = r.fields.find("op");
   if (op == r.fields.end() || op->second.size() != 1)
     throw Fault{"a record without op", origin + at};
   r.op = std::uint8_t(op->second[0]);
+  r.header_size = hl;
   r.data_size = u32(base + at + 4 + hl);
   r.data_at = at + 8 + hl;
   if (size - r.data_at < r.data_size) throw Fault{"record data past the end", origin + at};
@@ -81,17 +50,6 @@ Record record(const std::uint8_t* base, std::uint64_t size, std::uint64_t at,
   return r;
 }
 
-template <typename T>
-T field(const Record& r, const char* name, std::uint64_t at) {
-  const auto f = r.fields.find(name);
-  if (f == r.fields.end() || f->second.size() != sizeof(T))
-    throw Fault{std::string("a record without a valid '") + name + "' field", at};
-  T v;
-  std::memcpy(&v, f->second.data(), sizeof(T));
-  return v;
-}
-
-// A compressed chunk's content into `out` (true); an uncompressed one is checked where it lies.
 bool decompress(const Record& chunk, const std::uint8_t* data, std::uint64_t at,
                 std::vector<std::uint8_t>& out) {
   const auto c = chunk.fields.find("compression");
@@ -123,6 +81,12 @@ bool decompress(const Record& chunk, const std::uint8_t* data, std::uint64_t at,
   return true;
 }
 
+}  // namespace bag
+
+namespace {
+
+using namespace bag;
+
 // Every record in a chunk; the positions of its message records.
 std::set<std::uint32_t> checkChunk(const std::uint8_t* c, std::uint64_t size, std::uint64_t at) {
   std::set<std::uint32_t> messages;
@@ -139,6 +103,7 @@ void walk(std::ifstream& in, std::uint64_t file_size) {
   std::set<std::uint64_t> starts, chunks;
   std::vector<std::pair<std::uint64_t, std::uint64_t>> chunk_refs;  // (chunk_pos, where named)
   std::uint64_t index_pos = 0;
+  std::uint32_t conn_count = 0, chunk_count = 0, index_conns = 0, chunk_infos = 0;
   std::set<std::uint32_t> messages;  // of the last chunk
   std::vector<std::uint8_t> buf, chunk;
   for (std::uint64_t at = kMagicSize; at < file_size;) {
@@ -163,6 +128,8 @@ void walk(std::ifstream& in, std::uint64_t file_size) {
     if (at == kMagicSize) {
       if (r.op != kBagHeader) throw Fault{"no bag header record first", at};
       index_pos = field<std::uint64_t>(r, "index_pos", at);
+      conn_count = field<std::uint32_t>(r, "conn_count", at);
+      chunk_count = field<std::uint32_t>(r, "chunk_count", at);
       const auto e = r.fields.find("encryptor");
       if (e != r.fields.end() && !e->second.empty() && e->second != "rosbag/NoEncryptor")
         throw Fault{"an encrypted bag ('" + e->second + "'; decrypt it first)", at};
@@ -180,8 +147,10 @@ void walk(std::ifstream& in, std::uint64_t file_size) {
           throw Fault{"an index entry that names no message of its chunk", at};
     } else if (r.op == kChunkInfo) {
       chunk_refs.emplace_back(field<std::uint64_t>(r, "chunk_pos", at), at);
+      ++chunk_infos;
     } else if (r.op == kConnection) {
       fields(data, r.data_size, at + r.data_at);
+      if (index_pos && at >= index_pos) ++index_conns;
     }
     at += r.end;
   }
@@ -189,6 +158,12 @@ void walk(std::ifstream& in, std::uint64_t file_size) {
   if (index_pos == 0) throw Fault{"an unindexed bag (run 'rosbag reindex' on it)", kMagicSize};
   if (index_pos != file_size && !starts.count(index_pos))
     throw Fault{"an index position that is no record", kMagicSize};
+  // rosbag_storage reads as many connection records and chunk infos as the header counts.
+  if (index_conns < conn_count || chunk_infos < chunk_count)
+    throw Fault{"an index cut short (" + std::to_string(index_conns) + " of " +
+                    std::to_string(conn_count) + " connections, " + std::to_string(chunk_infos) +
+                    " of " + std::to_string(chunk_count) + " chunk infos)",
+                index_pos};
   for (const auto& [pos, where] : chunk_refs)
     if (!chunks.count(pos)) throw Fault{"a chunk info naming no chunk", where};
 }

@@ -16,7 +16,7 @@
 #include <optional>
 
 #include "bag_poses.h"
-#include "pedtrack/bag_check.h"
+#include "pedtrack/bag_open.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/replay_pacer.h"
@@ -65,8 +65,7 @@ class RosbagSource : public Sensor {
     const std::string mounts_key =
         table().where(ctx.params, path(&RosbagParams::frames, &RobotFrameParams::mounts));
     try {
-      checkBagStructure(file_);  // rosbag_storage trusts the lengths in the file
-      bag_.open(file_, rosbag::bagmode::Read);
+      recovered_ = openBagForReading(bag_, file_);
     } catch (const std::exception& e) {
       throw ConfigError("file: cannot open bag '" + file_ + "': " + oneLine(e.what()));
     }
@@ -91,12 +90,30 @@ class RosbagSource : public Sensor {
   bool detectionsOnly() const override { return detections_; }
 
   std::vector<std::pair<std::string, long>> counters() const override {
-    if (!detections_) return {};
-    return {{"poses_skipped", poses_skipped_}};
+    std::vector<std::pair<std::string, long>> out;
+    if (detections_) out.emplace_back("poses_skipped", poses_skipped_);
+    if (recovered_) {  // a bag cut short: where its data ends and what was read of it
+      out.emplace_back("bag_data_end_byte", long(recovered_->data_end));
+      out.emplace_back("bag_messages_recovered", long(recovered_->messages));
+    }
+    return out;
   }
 
   bool next(Frame& frame) override {
-    if (detections_) return nextPoses(frame);
+    if (detections_ ? nextPoses(frame) : nextScans(frame)) return true;
+    // A bag cut short fails the run once every complete message is replayed: outputs are kept.
+    if (recovered_ && !reported_) {
+      reported_ = true;
+      throw DataError(recoveryWarning(file_, *recovered_));
+    }
+    return false;
+  }
+
+  double progress() const override { return total_ ? static_cast<double>(consumed_) / total_ : -1; }
+
+ private:
+  // The next frame of scans or clouds: messages of several topics merged.
+  bool nextScans(Frame& frame) {
     // A group: consecutive messages (bag order) while no topic repeats and their stamps span at
     // most merge_window; the first message that does not fit waits for the next frame.
     std::vector<MountedObservation> group;
@@ -128,9 +145,6 @@ class RosbagSource : public Sensor {
     return true;
   }
 
-  double progress() const override { return total_ ? static_cast<double>(consumed_) / total_ : -1; }
-
- private:
   // One PoseArray message as a frame of detections.
   bool nextPoses(Frame& frame) {
     for (; it_ != view_->end(); ++it_) {
@@ -269,6 +283,8 @@ class RosbagSource : public Sensor {
   bool detections_ = false;                    // the topics are PoseArrays: detections
   long poses_skipped_ = 0;
   FrameClock clock_;
+  std::optional<BagRecovery> recovered_;  // the bag was cut short and re-indexed
+  bool reported_ = false;                 // its DataError was thrown at the end
 };
 
 PluginDescriptor describe() {
