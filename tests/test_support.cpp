@@ -51,7 +51,11 @@ std::string evalRunJson(const std::string& dir, const std::vector<std::string>& 
 }
 
 std::string freshDir(const std::string& tag) {
-  const fs::path d = fs::path(PEDTRACK_BUILD_DIR) / "Testing" / "work" / tag;
+  // PEDTRACK_TEST_WORK: a work root of its own, for copies of a test run side by side (the
+  // repeated runs that look for a flaky test under load).
+  const char* root = std::getenv("PEDTRACK_TEST_WORK");
+  const fs::path d =
+      (root && *root ? fs::path(root) : fs::path(PEDTRACK_BUILD_DIR) / "Testing" / "work") / tag;
   fs::remove_all(d);
   fs::create_directories(d);
   return d.string();

@@ -27,7 +27,8 @@ struct CommandResult {
 CommandResult runHost(const std::vector<std::string>& args);
 /// Runs a shell command line and captures its output.
 CommandResult runShell(const std::string& command_line);
-/// A fresh empty directory under the build tree's Testing/ folder, named after `tag`.
+/// A fresh empty directory named after `tag`: under the build tree's Testing/work, or under
+/// $PEDTRACK_TEST_WORK when set (copies of a test run side by side).
 std::string freshDir(const std::string& tag);
 /// ../shared/data (or $PEDTRACK_DATA): empty when absent.
 std::string sharedDataDir();
