@@ -10,6 +10,8 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/ros1bridge/laser_scan.h>
 #include <mrpt/ros1bridge/point_cloud2.h>
+#include <mrpt/ros1bridge/pose.h>
+#include <nav_msgs/Odometry.h>
 #include <netinet/in.h>
 #include <ros/ros.h>
 #include <rosbag/bag.h>
@@ -197,6 +199,8 @@ struct NodeCase {
   std::size_t min_scans = 1;
   bool cloud = false, expect_following = false;
   bool poses = false;  // the topic carries a detector's PoseArray (source.detections = true)
+  std::vector<std::string> sets;  // --set options given to both the run and the node
+  bool odometry = false;          // robot poses come from /odom (the bag has no /tf)
 };
 
 // Plays the case's bag into a private ROS graph running `pedtrack ros` and checks every scan
@@ -216,6 +220,7 @@ void checkNodeAgainstRun(const NodeCase& c) {
   std::vector<std::string> ref_args{"run",   pipeline, "--input",    bag, "--topic",
                                     c.topic, "--out",  dir + "/ref", "-q"};
   ref_args.insert(ref_args.end(), follow.begin(), follow.end());
+  ref_args.insert(ref_args.end(), c.sets.begin(), c.sets.end());
   const auto ref_run = runHost(ref_args);
   INFO(ref_run.output);
   REQUIRE(ref_run.exit_code == 0);
@@ -305,6 +310,7 @@ void checkNodeAgainstRun(const NodeCase& c) {
                                      dir + "/node",
                                      "-q"};
   node_args.insert(node_args.end(), follow.begin(), follow.end());
+  node_args.insert(node_args.end(), c.sets.begin(), c.sets.end());
   if (c.poses) node_args.insert(node_args.end(), {"--set", "source.detections=true"});
   Child node(node_args, dir + "/node.log");
   // Its publishers appear once its source has subscribed (plugins are created in stage order),
@@ -346,6 +352,8 @@ void checkNodeAgainstRun(const NodeCase& c) {
   CHECK(jsonNumber(run_json, "frames_dropped") == 0);
   CHECK(jsonNumber(run_json, "frames_processed") == scans_in_bag);
   CHECK(run_json.find("\"status\": \"ok\"") != std::string::npos);
+  // Every scan placed by odometry: the robot moved in the fixed frame, no /tf said so.
+  if (c.odometry) CHECK(jsonNumber(run_json, "odom_poses") == scans_in_bag);
 
   // One PoseArray, people cloud and MarkerArray per scan, stamped with the scan, in order.
   REQUIRE(got.tracks.size() == got.scans.size());
@@ -423,6 +431,42 @@ std::string writeSimulatedBag(const std::string& path, int scans) {
   return path;
 }
 
+// A robot that publishes no /tf (legs_crowd_10_moving: it drives through a crowd): its scans on
+// /scan and its wheel odometry on /odom (nav_msgs/Odometry, odom → base_link) and `mounts`, the
+// source key that places the laser on the robot.
+std::string writeOdometryBag(const std::string& path, int scans, std::string& mounts) {
+  pedtrack::sim::Simulator sim(
+      pedtrack::sim::loadScenario(kConfigs + "scenarios/legs_crowd_10_moving.ini"));
+  sim.setPointTruth(false);
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  pedtrack::sim::SimFrame f;
+  for (int i = 0; i < scans && sim.next(f); ++i) {
+    const auto* scan =
+        dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(f.observations.back().get());
+    REQUIRE(scan != nullptr);
+    sensor_msgs::LaserScan msg;
+    REQUIRE(mrpt::ros1bridge::toROS(*scan, msg));
+    msg.header.stamp = ros::Time(f.t);
+    msg.header.frame_id = "laser";
+    msg.header.seq = static_cast<std::uint32_t>(i);
+    nav_msgs::Odometry odom;
+    odom.header.stamp = msg.header.stamp;
+    odom.header.frame_id = "odom";
+    odom.child_frame_id = "base_link";
+    odom.pose.pose = mrpt::ros1bridge::toROS_Pose(f.robot_odometry);
+    bag.write("/odom", odom.header.stamp, odom);
+    bag.write("/scan", msg.header.stamp, msg);
+    if (i == 0) {
+      const mrpt::poses::CPose3D m = f.sensor_true - f.robot_true;
+      std::ostringstream o;
+      o << "/scan: " << m.x() << " " << m.y() << " " << m.z() << " " << m.yaw() * 180 / M_PI;
+      mounts = o.str();
+    }
+  }
+  bag.close();
+  return path;
+}
+
 // A detector's output as a bag: two people walking past each other 4 m ahead of a scanner, as a
 // geometry_msgs/PoseArray at 10 Hz in the laser's frame (no /tf: the laser is the fixed frame).
 std::string writeDetectionsBag(const std::string& path, int messages) {
@@ -488,6 +532,17 @@ TEST_CASE("pedtrack ros publishes the tracks of every simulated scan, as pedtrac
   c.tag = "ros_node_sim";
   c.min_scans = 200;
   // Nobody is in the follow zone in front of the scanner here: following is not checked.
+  checkNodeAgainstRun(c);
+}
+
+TEST_CASE("pedtrack ros places a robot without /tf by its /odom odometry, as pedtrack run") {
+  NodeCase c;
+  std::string mounts;
+  c.bag = writeOdometryBag(freshDir("ros_node_odom_bag") + "/odom.bag", 200, mounts);
+  c.tag = "ros_node_odom";
+  c.min_scans = 200;
+  c.sets = {"--set", "source.mounts=" + mounts};
+  c.odometry = true;
   checkNodeAgainstRun(c);
 }
 

@@ -1,5 +1,6 @@
 #include "live_poses.h"
 
+#include <mrpt/ros1bridge/pose.h>
 #include <tf2/exceptions.h>
 
 #include <algorithm>
@@ -8,17 +9,63 @@
 namespace pedtrack::ros_plugins {
 
 LivePoses::LivePoses(std::string fixed_frame, std::string base_frame,
-                     rosbag_source::MountTable mounts, bool warn_unmounted, double tf_timeout)
+                     rosbag_source::MountTable mounts, bool warn_unmounted, double tf_timeout,
+                     const std::string& odom_topic)
     : fixed_(std::move(fixed_frame)),
       base_(std::move(base_frame)),
       mounts_(std::move(mounts)),
       warn_unmounted_(warn_unmounted),
-      tf_timeout_(tf_timeout) {
+      tf_timeout_(tf_timeout),
+      odom_topic_(odom_topic) {
   // Its own spin thread and callback queue: /tf keeps flowing while the source waits on it.
   listener_ = std::make_unique<tf2_ros::TransformListener>(buffer_, true);
+  if (!odom_topic_.empty()) {
+    ros::NodeHandle nh;
+    ros::SubscribeOptions ops;
+    ops.template init<nav_msgs::Odometry>(
+        odom_topic_, 1000, [this](const nav_msgs::Odometry::ConstPtr& m) { odometry(m); });
+    ops.callback_queue = &odom_queue_;
+    ops.transport_hints = ros::TransportHints().tcpNoDelay();
+    odom_sub_ = nh.subscribe(ops);
+    odom_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &odom_queue_);
+    odom_spinner_->start();
+  }
 }
 
-LivePoses::~LivePoses() = default;
+LivePoses::~LivePoses() {
+  if (odom_spinner_) odom_spinner_->stop();  // no callback into a half-destroyed object
+}
+
+void LivePoses::odometry(const nav_msgs::Odometry::ConstPtr& m) {
+  const mrpt::poses::CPose3D pose = mrpt::ros1bridge::fromROS(m->pose.pose);
+  {
+    std::lock_guard<std::mutex> lk(odom_m_);
+    // In stamp order (messages of one publisher come in order; a late one is put in place).
+    auto at = odom_.end();
+    while (at != odom_.begin() && m->header.stamp < std::prev(at)->first) --at;
+    odom_.emplace(at, m->header.stamp, pose);
+    // A minute back is more than any scan waits in the queue.
+    while (odom_.size() > 2 && odom_.back().first - odom_.front().first > ros::Duration(60))
+      odom_.pop_front();
+  }
+  odom_cv_.notify_all();
+}
+
+bool LivePoses::odomAt(const ros::Time& stamp, mrpt::poses::CPose3D& out) {
+  if (odom_topic_.empty()) return false;
+  std::unique_lock<std::mutex> lk(odom_m_);
+  const auto reached = [&] { return !odom_.empty() && odom_.back().first >= stamp; };
+  // Wait only for a topic that is published: a robot without odometry costs no time.
+  if (!reached() && (!odom_.empty() || odom_sub_.getNumPublishers() > 0)) {
+    ++odom_waits_;
+    odom_cv_.wait_for(lk, std::chrono::duration<double>(tf_timeout_), reached);
+  }
+  if (odom_.empty()) return false;
+  auto it = std::upper_bound(odom_.begin(), odom_.end(), stamp,
+                             [](const ros::Time& v, const auto& e) { return v < e.first; });
+  out = (it == odom_.begin() ? it : std::prev(it))->second;
+  return true;
+}
 
 bool LivePoses::tryTf(const std::string& target, const std::string& source, const ros::Time& t,
                       double wait, mrpt::poses::CPose3D& out) {
@@ -50,6 +97,10 @@ bool LivePoses::lookup(const std::string& sensor_frame, const std::string& topic
   if (linked && tryTf(fixed_, base, stamp, tf_timeout_, robot)) {
     last_robot_ = robot;
     robot_known_ = true;
+  } else if (!linked && odomAt(stamp, robot)) {  // a robot that publishes odometry, not tf
+    last_robot_ = robot;
+    robot_known_ = true;
+    ++odom_poses_;
   } else {
     robot = last_robot_;
     if (linked) {
@@ -57,8 +108,9 @@ bool LivePoses::lookup(const std::string& sensor_frame, const std::string& topic
       warn_("no tf from '" + fixed_ + "' to '" + base +
             "' at some scans' stamps: the last known pose is used");
     } else {
-      warn_("/tf has no link from '" + fixed_ + "' to '" + base +
-            "' (yet): the robot is taken as static");
+      warn_("/tf has no link from '" + fixed_ + "' to '" + base + "' (yet)" +
+            (odom_topic_.empty() ? "" : " and no odometry on " + odom_topic_) +
+            ": the robot is taken as static");
     }
   }
   return robot_known_;

@@ -41,8 +41,9 @@ std::string tfFrame(const std::string& id) {
 struct RosTopicParams {
   std::string topic = "/scan";  // comma list
   rosbag_source::RobotFrameParams frames;
-  double tf_timeout = 0.1;    // s a scan waits for /tf to reach its stamp
-  double idle_timeout = 0.0;  // s; 0: wait until SIGINT/SIGTERM
+  double tf_timeout = 0.1;           // s a scan waits for /tf to reach its stamp
+  std::string odom_topic = "/odom";  // nav_msgs/Odometry where tf has no fixed→base link
+  double idle_timeout = 0.0;         // s; 0: wait until SIGINT/SIGTERM
   bool end_on_idle = false;
   bool detections = false;
   long queue_size = 20;
@@ -58,8 +59,11 @@ const ParamTable<RosTopicParams>& table() {
                 "merged, see merge_window); '~name' is private to the node")
           .include(&P::frames, rosbag_source::robotFrameTable())
           .real(&P::tf_timeout, "tf_timeout", "s", 0, 10,
-                "how long a scan waits for /tf to reach its stamp (only when /tf links "
-                "fixed_frame and base_frame at all)")
+                "how long a scan waits for /tf (or odometry) to reach its stamp (only when /tf "
+                "links fixed_frame and base_frame at all, or odometry is published)")
+          .text(&P::odom_topic, "odom_topic",
+                "nav_msgs/Odometry topic giving the robot's pose when /tf has no fixed_frame→"
+                "base_frame link (sensors then placed by `mounts`); empty: none")
           .real(&P::idle_timeout, "idle_timeout", "s", 0, 1e6,
                 "fail (or end, see end_on_idle) after this long without a message, counted once "
                 "a message came or a publisher is connected; 0: wait until SIGINT/SIGTERM")
@@ -92,8 +96,9 @@ class RosTopicSource : public Sensor {
     rosbag_source::MountTable mounts = rosbag_source::parseMounts(p.frames.mounts, mounts_key);
     rosbag_source::checkMountTopics(mounts, topics_, mounts_key, "one of `topic`");
     ensureNode(p.node.node, p.node.master_timeout);
-    poses_ = std::make_unique<LivePoses>(p.frames.fixed_frame, p.frames.base_frame,
-                                         std::move(mounts), topics_.size() > 1, p.tf_timeout);
+    poses_ =
+        std::make_unique<LivePoses>(p.frames.fixed_frame, p.frames.base_frame, std::move(mounts),
+                                    topics_.size() > 1, p.tf_timeout, p.odom_topic);
     for (std::size_t i = 0; i < topics_.size(); ++i) {
       ResolvedTopic r;
       try {
@@ -160,9 +165,14 @@ class RosTopicSource : public Sensor {
 
   std::vector<std::pair<std::string, long>> counters() const override {
     std::lock_guard<std::mutex> lk(m_);
-    return {{"messages", messages_},          {"queue_drops", queue_drops_},
-            {"wrong_type", wrong_type_},      {"bad_messages", bad_},
-            {"tf_waits", poses_->waits()},    {"tf_misses", poses_->misses()},
+    return {{"messages", messages_},
+            {"queue_drops", queue_drops_},
+            {"wrong_type", wrong_type_},
+            {"bad_messages", bad_},
+            {"tf_waits", poses_->waits()},
+            {"tf_misses", poses_->misses()},
+            {"odom_poses", poses_->odomPoses()},
+            {"odom_waits", poses_->odomWaits()},
             {"poses_skipped", poses_skipped_}};
   }
 
@@ -331,7 +341,7 @@ PluginDescriptor describe() {
   d.category = Category::Sensor;
   d.doc =
       "Live ROS1 LaserScan / PointCloud2 (or PoseArray detection) topics, robot and sensor poses "
-      "from /tf";
+      "from /tf (or odometry)";
   d.params = table().specs();
   d.create = [](const PluginContext& ctx) -> std::unique_ptr<Plugin> {
     return std::make_unique<RosTopicSource>(ctx);
