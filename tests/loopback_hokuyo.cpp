@@ -15,6 +15,9 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <thread>
+
+#include "test_support.h"
 
 namespace pedtrack::test {
 namespace {
@@ -59,7 +62,8 @@ LoopbackHokuyo::LoopbackHokuyo(Config config, std::vector<std::vector<float>> sc
     : cfg_(std::move(config)),
       scans_(std::move(scans)),
       period_(std::chrono::duration_cast<Clock::duration>(
-          std::chrono::duration<double>(60.0 / cfg_.scan_rpm / cfg_.speedup))) {
+          std::chrono::duration<double>(60.0 / cfg_.scan_rpm / cfg_.speedup))),
+      slow_left_(cfg_.slow_replies) {
   const std::size_t steps = static_cast<std::size_t>(cfg_.amax - cfg_.amin + 1);
   for (const auto& s : scans_)
     if (s.size() != steps)
@@ -166,6 +170,7 @@ bool LoopbackHokuyo::silent() const {
 // destructor's stop request is seen at once; no call below blocks for longer than that, except
 // a send to a client that stopped reading, which gives up after 0.5 s.
 void LoopbackHokuyo::serve() {
+  pinToDeviceCpu();
   while (!stop_) {
     if (!cfg_.serial && listen_fd_ < 0 && Clock::now() >= drop_until_)
       openListener();  // back up after a Drop
@@ -237,6 +242,10 @@ void LoopbackHokuyo::readClient() {
 // A reply is the command's echo, a status line ("00": fine) and, for commands that return data,
 // data lines; an empty line ends it.
 void LoopbackHokuyo::answer(const std::string& cmd) {
+  if (slow_left_ > 0 && !cfg_.slow_command.empty() && cmd.rfind(cfg_.slow_command, 0) == 0) {
+    --slow_left_;
+    std::this_thread::sleep_for(std::chrono::duration<double>(cfg_.slow_reply_seconds));
+  }
   const std::string echo = cmd + "\n", c2 = cmd.substr(0, 2);
   const auto reply = [&](const std::string& code, const std::string& data = "") {
     sendAll(echo + status(code) + data + "\n");

@@ -38,6 +38,11 @@ class LoopbackHokuyo {
     /// A serial device: a pseudo-terminal (devicePath()) instead of a TCP port. Drop does not
     /// apply (there is no connection to refuse).
     bool serial = false;
+    /// The first `slow_replies` replies to commands starting with `slow_command` come
+    /// `slow_reply_seconds` late (a device or a host busy for a moment).
+    std::string slow_command;
+    int slow_replies = 0;
+    double slow_reply_seconds = 0;
   };
 
   enum class Fault {
@@ -110,6 +115,7 @@ class LoopbackHokuyo {
   std::atomic<std::size_t> next_{0}, sent_{0}, accepted_{0}, streams_{0}, fired_{0};
   std::mutex faults_m_;
   std::vector<Pending> faults_;
+  int slow_left_ = 0;  // slow replies still to come
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include <pthread.h>
+#include <sched.h>
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
@@ -48,6 +50,20 @@ std::string evalRunJson(const std::string& dir, const std::vector<std::string>& 
   INFO(e.output);
   REQUIRE(e.exit_code == 0);
   return e.output;
+}
+
+void pinToDeviceCpu() {
+  const char* cpu = std::getenv("PEDTRACK_DEVICE_CPU");
+  if (!cpu || !*cpu) return;
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(std::atoi(cpu), &set);
+  pthread_setaffinity_np(pthread_self(), sizeof set, &set);
+}
+
+std::size_t liveFrames(std::size_t fallback) {
+  const char* n = std::getenv("PEDTRACK_LIVE_FRAMES");
+  return n && std::atol(n) > 0 ? std::size_t(std::atol(n)) : fallback;
 }
 
 std::string freshDir(const std::string& tag) {

@@ -27,6 +27,12 @@ struct CommandResult {
 CommandResult runHost(const std::vector<std::string>& args);
 /// Runs a shell command line and captures its output.
 CommandResult runShell(const std::string& command_line);
+/// Live-device tests measured on a quiet core (scripts/live_latency.sh runs them under `taskset`):
+/// a loopback device's thread calls this to move to the CPU named by $PEDTRACK_DEVICE_CPU, off
+/// the core the reader and the stages are pinned to. Without it, nothing changes.
+void pinToDeviceCpu();
+/// $PEDTRACK_LIVE_FRAMES when set (a longer latency measurement), else `fallback`.
+std::size_t liveFrames(std::size_t fallback);
 /// A fresh empty directory named after `tag`: under the build tree's Testing/work, or under
 /// $PEDTRACK_TEST_WORK when set (copies of a test run side by side).
 std::string freshDir(const std::string& tag);

@@ -205,7 +205,12 @@ class MrptSensorSource : public Sensor {
   }
 
   std::vector<std::pair<std::string, long>> counters() const override {
-    return {{"driver_errors", driver_errors_}, {"stalls", stalls_}, {"reconnects", reconnects_}};
+    std::vector<std::pair<std::string, long>> c = {
+        {"driver_errors", driver_errors_}, {"stalls", stalls_}, {"reconnects", reconnects_}};
+    if (driver_ == "CHokuyoURG")
+      c.emplace_back("startup_retries",
+                     startup_retries_ + (hokuyo_ ? hokuyo_->startupRetries() : 0));
+    return c;
   }
 
  private:
@@ -295,6 +300,7 @@ class MrptSensorSource : public Sensor {
     if (!reconnecting()) throw DataError(driver_ + ": " + why);
     if (error) ++driver_errors_;
     warnOnce(why);
+    if (hokuyo_) startup_retries_ += hokuyo_->startupRetries();
     release(sensor_, false);
     hokuyo_ = nullptr;
     retry_at_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
@@ -343,6 +349,7 @@ class MrptSensorSource : public Sensor {
   bool live_ = true;
   bool in_error_ = false, warned_ = false;
   long driver_errors_ = 0, stalls_ = 0, reconnects_ = 0, consecutive_reconnects_ = 0;
+  long startup_retries_ = 0;  // of the drivers already released
   Clock::time_point opened_at_, retry_at_, last_data_;
   mrpt::hwdrivers::CGenericSensor::Ptr sensor_;
   std::deque<mrpt::obs::CObservation::Ptr> queue_;
