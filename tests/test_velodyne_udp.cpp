@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <thread>
 
 #include "loopback_vlp16.h"
@@ -258,4 +259,49 @@ TEST_CASE("velodyne_udp counts what the network and the kernel lost", "[velodyne
   // Both count the drops before the last packet received (a drop after it shows in neither).
   CHECK(burst.lost == burst.kernel);
   CHECK(burst.packets + burst.kernel <= long(burst.sent));
+}
+
+TEST_CASE("velodyne_udp: a live 3D pipeline tracks the people of every revolution",
+          "[velodyne_udp][live][pipeline]") {
+  // The crowd at the VLP-16's own pace (10 revolutions a second), people_3d_vlp16's stages
+  // behind the source. PEDTRACK_LIVE_FRAMES: longer, for scripts/live_latency.sh.
+  const auto revs = simulate(int(liveFrames(40)) + 1);
+  const int port = freeUdpPort();
+  PipelineOverrides ov;
+  ov.source_plugin = "velodyne_udp";  // in place of the pipeline's simulator
+  ov.sets = {"source.address=127.0.0.1", "source.port=" + std::to_string(port),
+             "source.idle_timeout=1", "source.end_on_idle=true", "source.pose_z=1.0"};
+  const std::string ini = kConfigs + "people_3d_vlp16.ini";
+  const auto cfg = PipelineConfig::fromText(readFile(ini), ini, ov, testRegistry());
+  Pipeline p(cfg);
+  std::size_t sent = 0;
+  std::thread device([&] {
+    pinToDeviceCpu();
+    LoopbackVlp16 dev(port, freeUdpPort());
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < revs.size(); ++i) {
+      sent += dev.sendRevolution(*revs[i], 0, 75 / 754.0);
+      std::this_thread::sleep_until(start + std::chrono::milliseconds(100 * (i + 1)));
+    }
+  });
+  RunOptions opt;
+  opt.out_dir = freshDir("velodyne_udp_live");
+  opt.progress = false;
+  const RunSummary s = p.run(opt);
+  device.join();
+  INFO(s.error);
+  CHECK(s.status == "ok");
+  std::map<std::string, long> c;
+  for (const auto& [k, v] : s.stages[0].counters) c[k] = v;
+  std::printf(
+      "velodyne_udp live: %zu revolutions sent, %zu read, %zu processed, %zu dropped, "
+      "%ld packets lost; latency p50 %.2f ms, p99 %.2f ms, max %.2f ms\n",
+      revs.size() - 1, s.frames_read, s.frames_processed, s.frames_dropped,
+      c["packets_lost"] + c["kernel_drops"], s.latency.percentile(50), s.latency.percentile(99),
+      s.latency.max());
+  CHECK(c["packets"] == long(sent));  // nothing lost on the way in
+  CHECK(s.frames_read == revs.size() - 1);
+  if (!kSanitized) CHECK(s.frames_processed == s.frames_read);  // a Release build keeps up
+  const auto rows = lines(readFile(opt.out_dir + "/tracks.csv"));
+  CHECK(rows.size() > 50);  // 20 walkers over 4 s
 }
