@@ -257,7 +257,7 @@ TEST_CASE("hokuyo loopback: a device starved for 1.6 s during start-up costs a r
   CHECK(servedIndices(run.frames, served) == allBut(served.size(), {}));
   CHECK(run.counters.at("driver_errors") == 0);
   CHECK(run.counters.at("reconnects") == 0);
-  CHECK(run.counters.at("startup_retries") == 1);
+  CHECK(run.counters.at("startup_retries") >= 1);  // one here; more on a loaded machine
 }
 
 TEST_CASE(
@@ -361,16 +361,16 @@ TEST_CASE("hokuyo loopback: a device still mute when the driver starts is waited
     CHECK(device.connections() == 1);
   }
 
-  SECTION("mute for 4 s: the source re-creates the driver until the device answers") {
-    cfg.mute_first = 4.0;  // longer than the driver's start-up attempts
+  SECTION("mute for 8 s: the source re-creates the driver until the device answers") {
+    cfg.mute_first = 8.0;  // longer than the driver's start-up attempts (about 6 s)
     LoopbackHokuyo device(cfg, served);
     const Run run =
         readFrames("[pipeline]\nstages = source\n" +
                        sourceSection(device.port(),
                                      "end_on_idle = true\nreconnect_after = 0.5\nreconnect_delay = "
                                      "0.2\n",
-                                     12),
-                   served.size(), 25);
+                                     14),
+                   served.size(), 30);
     INFO("read " << run.frames.size() << " frames in " << run.seconds << " s");
     CHECK(servedIndices(run.frames, served) == allBut(served.size(), {}));
     CHECK(run.counters.at("stalls") >= 1);
@@ -378,17 +378,17 @@ TEST_CASE("hokuyo loopback: a device still mute when the driver starts is waited
     CHECK(device.connections() >= 2);
   }
 
-  SECTION("mute for 4 s: CHokuyoURG alone never starts the stream") {
+  SECTION("mute for 8 s: CHokuyoURG alone never starts the stream") {
     // What the stall check is for: a driver whose start-ups all went unanswered waits for scans
     // that were never asked for (it restarts only a stream it saw run), until idle_timeout.
-    cfg.mute_first = 4.0;
+    cfg.mute_first = 8.0;
     LoopbackHokuyo device(cfg, served);
-    const Run run =
-        readFrames("[pipeline]\nstages = source\n" +
-                       sourceSection(device.port(), "end_on_idle = true\nreconnect_after = 0\n", 6),
-                   served.size(), 20);
+    const Run run = readFrames(
+        "[pipeline]\nstages = source\n" +
+            sourceSection(device.port(), "end_on_idle = true\nreconnect_after = 0\n", 10),
+        served.size(), 20);
     CHECK(run.frames.empty());
-    CHECK(run.seconds > 6);
+    CHECK(run.seconds > 10);  // the device answered from 8 s on: nobody asked it to stream
     CHECK(device.streamsStarted() == 0);
     CHECK(device.connections() == 1);
   }

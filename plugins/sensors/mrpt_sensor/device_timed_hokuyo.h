@@ -17,13 +17,15 @@
 // port opens, one in initialize()); the driver then sat in its error state until mrpt_sensor
 // re-created it after reconnect_after + reconnect_delay (2.5 s) and another start-up. Here the
 // start-up is tried again at once, after the late replies are purged, up to kStartupAttempts
-// times, and counted (startup_retries in run.json).
+// times (unless the run is asked to stop), and counted (startup_retries in run.json).
 #pragma once
 
 #include <mrpt/hwdrivers/CHokuyoURG.h>
 
 #include <chrono>
 #include <thread>
+
+#include "pedtrack/stop_request.h"
 
 namespace pedtrack::mrpt_sensor {
 
@@ -40,14 +42,16 @@ class DeviceTimedHokuyo : public mrpt::hwdrivers::CHokuyoURG {
     if (!m_disable_firmware_timestamp) m_timeStartSynchDelay = kArrivalStampedScans;
   }
 
-  static constexpr int kStartupAttempts = 3;
+  // Five start-ups take about 6 s when nothing answers: a device starved for a few seconds on a
+  // loaded host still comes up without an error; a dead one is then re-created by mrpt_sensor.
+  static constexpr int kStartupAttempts = 5;
 
   // MRPT's initialize() (open the link, turnOn()) with the start-up tried again when it fails.
   void initialize() override {
     if (!ensureStreamIsOpen()) return;
     for (int attempt = 1; attempt <= kStartupAttempts; ++attempt) {
       if (turnOn()) return;
-      if (attempt == kStartupAttempts) break;
+      if (attempt == kStartupAttempts || pedtrack::stopRequested()) break;
       ++startup_retries_;
       // The late replies arrive meanwhile; purged, they cannot be taken for the next ones.
       std::this_thread::sleep_for(std::chrono::milliseconds(300));
