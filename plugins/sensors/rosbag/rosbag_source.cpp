@@ -66,6 +66,8 @@ class RosbagSource : public Sensor {
         table().where(ctx.params, path(&RosbagParams::frames, &RobotFrameParams::mounts));
     try {
       recovered_ = openBagForReading(bag_, file_);
+      if (recovered_)  // said at once; the run then ends with it as its error (exit 1)
+        std::cerr << "warning: " << recoveryWarning(file_, *recovered_) << "\n";
     } catch (const std::exception& e) {
       throw ConfigError("file: cannot open bag '" + file_ + "': " + oneLine(e.what()));
     }
