@@ -13,8 +13,6 @@
 #include "bag_layout.h"
 #include "pedtrack/bag_recover.h"
 #include "pedtrack/errors.h"
-#include "pedtrack/pipeline.h"
-#include "pedtrack/pipeline_config.h"
 #include "test_support.h"
 
 using namespace pedtrack;
@@ -53,21 +51,13 @@ struct Replay {
 // The rosbag source on `file` until its end or its error.
 Replay replayBag(const std::string& file) {
   Replay r;
-  try {
-    const auto cfg = PipelineConfig::fromText(
-        "[pipeline]\nstages = source\n[source]\nplugin = rosbag\nfile = " + file + "\n", "t.ini",
-        {}, testRegistry());
-    Pipeline p(cfg);
-    Frame f;
-    while (p.source().next(f)) {
-      const auto* scan =
-          dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(f.observations.at(0).get());
-      r.first_range.push_back(scan ? scan->getScanRange(0) : -1);
-      f = Frame();
-    }
-  } catch (const std::exception& e) {
-    r.error = e.what();
-  }
+  r.error = readFramesUntilError(
+      "[pipeline]\nstages = source\n[source]\nplugin = rosbag\nfile = " + file + "\n",
+      [&](const Frame& f) {
+        const auto* scan =
+            dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(f.observations.at(0).get());
+        r.first_range.push_back(scan ? scan->getScanRange(0) : -1);
+      });
   return r;
 }
 

@@ -10,8 +10,6 @@
 #include <filesystem>
 
 #include "bag_layout.h"
-#include "pedtrack/pipeline.h"
-#include "pedtrack/pipeline_config.h"
 #include "test_support.h"
 
 using namespace pedtrack;
@@ -22,11 +20,7 @@ namespace {
 const std::string kConfigs = std::string(PEDTRACK_SOURCE_DIR) + "/configs/";
 
 std::string demoBag() {
-  const std::string data = sharedDataDir();
-  const std::string bag =
-      data.empty() ? "" : data + "/leg_tracker/demo_stationary_simple_environment.bag";
-  requireData(bag);
-  return bag;
+  return requiredDataFile("leg_tracker/demo_stationary_simple_environment.bag");
 }
 
 struct Replay {
@@ -37,25 +31,17 @@ struct Replay {
 
 Replay replayBag(const std::string& file) {
   Replay r;
-  try {
-    const auto cfg = PipelineConfig::fromText(
-        "[pipeline]\nstages = source\n[source]\nplugin = rosbag\nfile = " + file + "\n", "t.ini",
-        {}, testRegistry());
-    Pipeline p(cfg);
-    Frame f;
-    while (p.source().next(f)) {
-      r.t.push_back(f.t);
-      const auto* scan =
-          dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(f.observations.at(0).get());
-      REQUIRE(scan);
-      std::vector<float> ranges(scan->getScanSize());
-      for (std::size_t k = 0; k < ranges.size(); ++k) ranges[k] = scan->getScanRange(k);
-      r.ranges.push_back(std::move(ranges));
-      f = Frame();
-    }
-  } catch (const std::exception& e) {
-    r.error = e.what();
-  }
+  r.error = readFramesUntilError(
+      "[pipeline]\nstages = source\n[source]\nplugin = rosbag\nfile = " + file + "\n",
+      [&](const Frame& f) {
+        r.t.push_back(f.t);
+        const auto* scan =
+            dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(f.observations.at(0).get());
+        REQUIRE(scan);
+        std::vector<float> ranges(scan->getScanSize());
+        for (std::size_t k = 0; k < ranges.size(); ++k) ranges[k] = scan->getScanRange(k);
+        r.ranges.push_back(std::move(ranges));
+      });
   return r;
 }
 
@@ -165,9 +151,8 @@ TEST_CASE("pedtrack import of a cut bag writes its complete scans, then fails",
 
 TEST_CASE("pedtrack eval --truth of a cut benchmark bag scores its complete chunks, then fails",
           "[bag_truncation]") {
-  const std::string data = sharedDataDir();
-  const std::string bag = data + "/leg_tracker_benchmark/person_following_outdoor_1_first240s.bag";
-  requireData(bag);
+  const std::string bag =
+      requiredDataFile("leg_tracker_benchmark/person_following_outdoor_1_first240s.bag");
   const std::string bytes = readFile(bag);
   const std::string dir = freshDir("bag_truncation_eval");
   // Its chunks are bz2-compressed: a cut inside the third loses that chunk whole (a bz2 block

@@ -408,11 +408,13 @@ void checkNodeAgainstRun(const NodeCase& c) {
   CHECK(readFile(dir + "/node/tracks.csv") == ref_csv);
 }
 
-// A bag of simulated leg-height scans (legs_standing_60s: a person walks in and stands, another
-// passes), written with rosbag: the node runs in CI, where the shared data is absent.
-std::string writeSimulatedBag(const std::string& path, int scans) {
-  pedtrack::sim::Simulator sim(
-      pedtrack::sim::loadScenario(kConfigs + "scenarios/legs_standing_60s.ini"));
+// A bag of simulated leg-height scans on /scan, written with rosbag: the node runs in CI, where
+// the shared data is absent. `mounts` given: the robot's wheel odometry goes on /odom too
+// (nav_msgs/Odometry, odom → base_link; no /tf at all) and `mounts` receives the source key that
+// places the laser on the robot.
+std::string writeSimulatedBag(const std::string& path, int scans, const std::string& scenario,
+                              std::string* mounts = nullptr) {
+  pedtrack::sim::Simulator sim(pedtrack::sim::loadScenario(kConfigs + "scenarios/" + scenario));
   sim.setPointTruth(false);
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   pedtrack::sim::SimFrame f;
@@ -425,43 +427,21 @@ std::string writeSimulatedBag(const std::string& path, int scans) {
     msg.header.stamp = ros::Time(f.t);
     msg.header.frame_id = "laser";
     msg.header.seq = static_cast<std::uint32_t>(i);
-    bag.write("/scan", msg.header.stamp, msg);
-  }
-  bag.close();
-  return path;
-}
-
-// A robot that publishes no /tf (legs_crowd_10_moving: it drives through a crowd): its scans on
-// /scan and its wheel odometry on /odom (nav_msgs/Odometry, odom → base_link) and `mounts`, the
-// source key that places the laser on the robot.
-std::string writeOdometryBag(const std::string& path, int scans, std::string& mounts) {
-  pedtrack::sim::Simulator sim(
-      pedtrack::sim::loadScenario(kConfigs + "scenarios/legs_crowd_10_moving.ini"));
-  sim.setPointTruth(false);
-  rosbag::Bag bag(path, rosbag::bagmode::Write);
-  pedtrack::sim::SimFrame f;
-  for (int i = 0; i < scans && sim.next(f); ++i) {
-    const auto* scan =
-        dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(f.observations.back().get());
-    REQUIRE(scan != nullptr);
-    sensor_msgs::LaserScan msg;
-    REQUIRE(mrpt::ros1bridge::toROS(*scan, msg));
-    msg.header.stamp = ros::Time(f.t);
-    msg.header.frame_id = "laser";
-    msg.header.seq = static_cast<std::uint32_t>(i);
-    nav_msgs::Odometry odom;
-    odom.header.stamp = msg.header.stamp;
-    odom.header.frame_id = "odom";
-    odom.child_frame_id = "base_link";
-    odom.pose.pose = mrpt::ros1bridge::toROS_Pose(f.robot_odometry);
-    bag.write("/odom", odom.header.stamp, odom);
-    bag.write("/scan", msg.header.stamp, msg);
-    if (i == 0) {
-      const mrpt::poses::CPose3D m = f.sensor_true - f.robot_true;
-      std::ostringstream o;
-      o << "/scan: " << m.x() << " " << m.y() << " " << m.z() << " " << m.yaw() * 180 / M_PI;
-      mounts = o.str();
+    if (mounts) {
+      nav_msgs::Odometry odom;
+      odom.header.stamp = msg.header.stamp;
+      odom.header.frame_id = "odom";
+      odom.child_frame_id = "base_link";
+      odom.pose.pose = mrpt::ros1bridge::toROS_Pose(f.robot_odometry);
+      bag.write("/odom", odom.header.stamp, odom);
+      if (i == 0) {
+        const mrpt::poses::CPose3D m = f.sensor_true - f.robot_true;
+        std::ostringstream o;
+        o << "/scan: " << m.x() << " " << m.y() << " " << m.z() << " " << m.yaw() * 180 / M_PI;
+        *mounts = o.str();
+      }
     }
+    bag.write("/scan", msg.header.stamp, msg);
   }
   bag.close();
   return path;
@@ -528,7 +508,9 @@ TEST_CASE("pedtrack ros publishes the tracks of every scan played from a bag, as
 
 TEST_CASE("pedtrack ros publishes the tracks of every simulated scan, as pedtrack run") {
   NodeCase c;
-  c.bag = writeSimulatedBag(freshDir("ros_node_sim_bag") + "/legs.bag", 200);
+  // legs_standing_60s: a person walks in and stands, another passes.
+  c.bag =
+      writeSimulatedBag(freshDir("ros_node_sim_bag") + "/legs.bag", 200, "legs_standing_60s.ini");
   c.tag = "ros_node_sim";
   c.min_scans = 200;
   // Nobody is in the follow zone in front of the scanner here: following is not checked.
@@ -538,7 +520,9 @@ TEST_CASE("pedtrack ros publishes the tracks of every simulated scan, as pedtrac
 TEST_CASE("pedtrack ros places a robot without /tf by its /odom odometry, as pedtrack run") {
   NodeCase c;
   std::string mounts;
-  c.bag = writeOdometryBag(freshDir("ros_node_odom_bag") + "/odom.bag", 200, mounts);
+  // legs_crowd_10_moving: the robot drives through a crowd; it publishes no /tf.
+  c.bag = writeSimulatedBag(freshDir("ros_node_odom_bag") + "/odom.bag", 200,
+                            "legs_crowd_10_moving.ini", &mounts);
   c.tag = "ros_node_odom";
   c.min_scans = 200;
   c.sets = {"--set", "source.mounts=" + mounts};

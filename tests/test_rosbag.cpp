@@ -29,11 +29,7 @@ using namespace pedtrack::test;
 namespace {
 
 std::string demoBag() {
-  const std::string data = sharedDataDir();
-  const std::string bag =
-      data.empty() ? "" : data + "/leg_tracker/demo_stationary_simple_environment.bag";
-  requireData(bag);
-  return bag;
+  return requiredDataFile("leg_tracker/demo_stationary_simple_environment.bag");
 }
 
 std::vector<Frame> replay(const std::string& plugin, const std::string& file,

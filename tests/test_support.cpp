@@ -133,6 +133,13 @@ void requireData(const std::string& path) {
   std::fflush(stdout);
   std::exit(77);
 }
+
+std::string requiredDataFile(const std::string& relative) {
+  const std::string data = sharedDataDir();
+  const std::string path = data.empty() ? "" : data + "/" + relative;
+  requireData(path);
+  return path;
+}
 }  // namespace pedtrack::test
 
 namespace pedtrack::test {
@@ -156,5 +163,18 @@ std::vector<Frame> readAllFrames(const std::string& pipeline_text, const std::st
   Frame f;
   while (p.source().next(f)) frames.push_back(f), f = Frame();
   return frames;
+}
+
+std::string readFramesUntilError(const std::string& pipeline_text,
+                                 const std::function<void(const Frame&)>& each) {
+  try {
+    const auto cfg = PipelineConfig::fromText(pipeline_text, "t.ini", {}, testRegistry());
+    Pipeline p(cfg);
+    Frame f;
+    while (p.source().next(f)) each(f), f = Frame();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
 }
 }  // namespace pedtrack::test

@@ -3,6 +3,7 @@
 #include "pedtrack/pipeline.h"
 #include "pedtrack/plugin_registry.h"
 // Helpers shared by the test files: paths, running the host binary, temporary directories.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,6 +57,9 @@ namespace pedtrack::test {
 /// Ends the test process as skipped (CTest SKIP_RETURN_CODE 77), naming the missing path, when
 /// `path` does not exist: a user's fresh clone has no ../shared/data.
 void requireData(const std::string& path);
+/// The shared data file at `relative` (under ../shared/data or $PEDTRACK_DATA), or the process
+/// ends as skipped when it is absent (requireData).
+std::string requiredDataFile(const std::string& relative);
 }  // namespace pedtrack::test
 
 namespace pedtrack::test {
@@ -64,6 +68,10 @@ const PluginRegistry& testRegistry();
 /// Every frame the source of `pipeline_text` yields (`file` names it in messages).
 std::vector<Frame> readAllFrames(const std::string& pipeline_text,
                                  const std::string& file = "t.ini");
+/// Hands every frame of that source to `each` until its end, or until it throws (a bag cut short
+/// fails after its good frames): what it threw, "" at a clean end.
+std::string readFramesUntilError(const std::string& pipeline_text,
+                                 const std::function<void(const Frame&)>& each);
 /// The pipeline of `pipeline_text` with its stages driven by the test on frames of its own, as a
 /// run drives them (the source is built but never read).
 struct DrivenStages {

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "bag_records.h"
-#include "pedtrack/bag_check.h"
 #include "pedtrack/errors.h"
 
 namespace pedtrack {
@@ -39,6 +38,13 @@ struct ChunkInfo {
   std::map<std::uint32_t, std::uint32_t> counts;  // messages per connection
 };
 
+// A message record of a chunk, as its index entry needs it.
+struct MessageEntry {
+  std::uint32_t conn = 0;
+  std::string time;          // the record's 8-byte time field
+  std::uint32_t offset = 0;  // of the record in the chunk
+};
+
 // Writes the re-indexed bag as rosbag_storage reads it: the bag header (pointing at the index),
 // each chunk uncompressed and followed by its per-connection index records, then the connection
 // records and chunk infos.
@@ -50,28 +56,19 @@ class BagWriter {
     writeHeader(0, 0, 0);
   }
 
-  // One chunk's complete records (the bytes of an uncompressed chunk).
-  void chunk(const std::uint8_t* c, std::uint64_t size,
+  // One chunk's complete records (the bytes of an uncompressed chunk) and its messages.
+  void chunk(const std::uint8_t* c, std::uint64_t size, const std::vector<MessageEntry>& messages,
              const std::map<std::uint32_t, Connection>& known) {
     ChunkInfo info;
     info.pos = std::uint64_t(out_.tellp());
     std::map<std::uint32_t, std::string> index;  // per connection: (time, offset) entries
-    for (std::uint64_t p = 0; p < size;) {
-      const Record r = record(c, size, p, 0);
-      if (r.op == kMessage) {
-        const auto conn = field<std::uint32_t>(r, "conn", p);
-        const auto t = r.fields.find("time");
-        if (t == r.fields.end() || t->second.size() != 8)
-          throw Fault{"a message without a valid 'time' field", p};
-        const std::string& time = t->second;
-        if (!known.count(conn)) throw Fault{"a message on an unknown connection", p};
-        index[conn] += time + bytes(std::uint32_t(p));
-        ++info.counts[conn];
-        if (info.start.empty() || timeKey(time) < timeKey(info.start)) info.start = time;
-        if (info.end.empty() || timeKey(time) > timeKey(info.end)) info.end = time;
-        ++messages_;
-      }
-      p = r.end;
+    for (const MessageEntry& m : messages) {
+      if (!known.count(m.conn)) throw Fault{"a message on an unknown connection", m.offset};
+      index[m.conn] += m.time + bytes(m.offset);
+      ++info.counts[m.conn];
+      if (info.start.empty() || timeKey(m.time) < timeKey(info.start)) info.start = m.time;
+      if (info.end.empty() || timeKey(m.time) > timeKey(info.end)) info.end = m.time;
+      ++messages_;
     }
     if (info.counts.empty()) return;  // only connection records: nothing to index
     write({{"op", std::string(1, char(kChunk))},
@@ -149,11 +146,17 @@ void connection(const Record& r, const std::uint8_t* data, std::uint64_t at, std
       Connection{topic->second, std::string(reinterpret_cast<const char*>(data), r.data_size)});
 }
 
-// The connection records of a chunk's complete records, and the length of its complete prefix:
-// the whole chunk unless `cut` (the file ended inside it), where a record cut off ends it.
-std::uint64_t scanChunk(const std::uint8_t* c, std::uint64_t size, std::uint64_t at, bool cut,
-                        std::map<std::uint32_t, Connection>& connections) {
-  std::uint64_t p = 0;
+// A chunk's complete records: their connections into `connections`, their messages, and the
+// length of the complete prefix (the whole chunk unless `cut`, the file ended inside it, where a
+// record cut off ends it).
+struct ChunkScan {
+  std::uint64_t size = 0;
+  std::vector<MessageEntry> messages;
+};
+ChunkScan scanChunk(const std::uint8_t* c, std::uint64_t size, std::uint64_t at, bool cut,
+                    std::map<std::uint32_t, Connection>& connections) {
+  ChunkScan out;
+  std::uint64_t& p = out.size;
   while (p < size) {
     if (cut) {  // a record the end of the file cuts off ends the chunk
       if (size - p < 8) break;
@@ -164,12 +167,18 @@ std::uint64_t scanChunk(const std::uint8_t* c, std::uint64_t size, std::uint64_t
     const Record r = record(c, size, p, at, true);  // copied as they are: they must read back
     if (r.op == kConnection) {
       connection(r, c + r.data_at, at + p, at + r.data_at, connections);
-    } else if (r.op != kMessage) {
+    } else if (r.op == kMessage) {
+      const auto t = r.fields.find("time");
+      if (t == r.fields.end() || t->second.size() != 8)
+        throw Fault{"a message without a valid 'time' field", at + p};
+      out.messages.push_back(
+          {field<std::uint32_t>(r, "conn", at + p), t->second, std::uint32_t(p)});
+    } else {
       throw Fault{"a record other than a message or connection inside a chunk", at + p};
     }
     p = r.end;
   }
-  return p;
+  return out;
 }
 
 }  // namespace
@@ -244,14 +253,14 @@ BagRecovery reindexBag(const std::string& path, const std::string& out_path) {
           const bool packed = decompress(r, data, at, chunk);
           const std::uint8_t* content = packed ? chunk.data() : data;
           const std::uint64_t size = packed ? chunk.size() : dl;
-          scanChunk(content, size, at + data_at, false, connections);
-          out.chunk(content, size, connections);
+          const ChunkScan scan = scanChunk(content, size, at + data_at, false, connections);
+          out.chunk(content, size, scan.messages, connections);
         } else if (plain) {
           // The complete records of the chunk the file ends in.
           const std::uint64_t avail = buf.size() - data_at;
-          const std::uint64_t kept = scanChunk(data, avail, at + data_at, true, connections);
-          out.chunk(data, kept, connections);
-          rec.data_end = at + data_at + kept;
+          const ChunkScan scan = scanChunk(data, avail, at + data_at, true, connections);
+          out.chunk(data, scan.size, scan.messages, connections);
+          rec.data_end = at + data_at + scan.size;
           break;
         } else {
           rec.data_end = at;  // a compressed chunk cut short does not decompress
@@ -273,24 +282,25 @@ BagRecovery reindexBag(const std::string& path, const std::string& out_path) {
   out.close(connections);
   rec.messages = out.messages();
   rec.chunks = out.chunks();
-  if (rec.messages == 0)
-    throw DataError("not a readable ROS bag: no complete message before its data ends at byte " +
-                    std::to_string(rec.data_end));
-  if (rec.data_end < file_size || index_pos >= file_size)  // records or the index cut off
+  if (rec.data_end < file_size || index_pos >= file_size) {  // records or the index cut off
+    rec.cause = BagRecovery::Cause::CutShort;
     rec.reason = "cut short: its data ends at byte " + std::to_string(rec.data_end) + " of " +
                  std::to_string(file_size);
-  else if (index_pos == 0)
+  } else if (index_pos == 0) {
+    rec.cause = BagRecovery::Cause::NoIndex;
     rec.reason = "no index (the recording was not closed)";
-  else
+  } else {
+    rec.cause = BagRecovery::Cause::DamagedIndex;
     rec.reason = "a damaged index";
+  }
   return rec;
 }
 
 std::string recoveryWarning(const std::string& path, const BagRecovery& r) {
   const std::string n = std::to_string(r.messages);
   return path + ": " + r.reason + "; " +
-         (r.reason.rfind("cut short", 0) == 0 ? "the " + n + " complete messages before it"
-                                              : "its " + n + " messages") +
+         (r.cause == BagRecovery::Cause::CutShort ? "the " + n + " complete messages before it"
+                                                  : "its " + n + " messages") +
          " are read (as 'rosbag reindex' would recover them)";
 }
 

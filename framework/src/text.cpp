@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <sstream>
 
 namespace pedtrack {
 
@@ -24,6 +25,12 @@ std::vector<std::string> splitList(const std::string& s) {
     }
   }
   return out;
+}
+
+std::string shortNumber(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
 }
 
 std::string oneLine(const std::string& what) {

@@ -61,9 +61,7 @@ bool LivePoses::odomAt(const ros::Time& stamp, mrpt::poses::CPose3D& out) {
     odom_cv_.wait_for(lk, std::chrono::duration<double>(tf_timeout_), reached);
   }
   if (odom_.empty()) return false;
-  auto it = std::upper_bound(odom_.begin(), odom_.end(), stamp,
-                             [](const ros::Time& v, const auto& e) { return v < e.first; });
-  out = (it == odom_.begin() ? it : std::prev(it))->second;
+  out = rosbag_source::odometryAt(odom_, stamp);
   return true;
 }
 

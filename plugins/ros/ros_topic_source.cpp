@@ -41,9 +41,8 @@ std::string tfFrame(const std::string& id) {
 struct RosTopicParams {
   std::string topic = "/scan";  // comma list
   rosbag_source::RobotFrameParams frames;
-  double tf_timeout = 0.1;           // s a scan waits for /tf to reach its stamp
-  std::string odom_topic = "/odom";  // nav_msgs/Odometry where tf has no fixed→base link
-  double idle_timeout = 0.0;         // s; 0: wait until SIGINT/SIGTERM
+  double tf_timeout = 0.1;    // s a scan waits for /tf to reach its stamp
+  double idle_timeout = 0.0;  // s; 0: wait until SIGINT/SIGTERM
   bool end_on_idle = false;
   bool detections = false;
   long queue_size = 20;
@@ -61,9 +60,6 @@ const ParamTable<RosTopicParams>& table() {
           .real(&P::tf_timeout, "tf_timeout", "s", 0, 10,
                 "how long a scan waits for /tf (or odometry) to reach its stamp (only when /tf "
                 "links fixed_frame and base_frame at all, or odometry is published)")
-          .text(&P::odom_topic, "odom_topic",
-                "nav_msgs/Odometry topic giving the robot's pose when /tf has no fixed_frame→"
-                "base_frame link (sensors then placed by `mounts`); empty: none")
           .real(&P::idle_timeout, "idle_timeout", "s", 0, 1e6,
                 "fail (or end, see end_on_idle) after this long without a message, counted once "
                 "a message came or a publisher is connected; 0: wait until SIGINT/SIGTERM")
@@ -98,7 +94,7 @@ class RosTopicSource : public Sensor {
     ensureNode(p.node.node, p.node.master_timeout);
     poses_ =
         std::make_unique<LivePoses>(p.frames.fixed_frame, p.frames.base_frame, std::move(mounts),
-                                    topics_.size() > 1, p.tf_timeout, p.odom_topic);
+                                    topics_.size() > 1, p.tf_timeout, p.frames.odom_topic);
     for (std::size_t i = 0; i < topics_.size(); ++i) {
       ResolvedTopic r;
       try {

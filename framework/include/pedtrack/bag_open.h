@@ -26,8 +26,6 @@ inline std::optional<BagRecovery> openBagForReading(rosbag::Bag& bag, const std:
   try {
     checkBagStructure(path);  // rosbag_storage trusts the lengths in the file
   } catch (const DataError& check) {
-    // Not a bag at all: nothing to recover.
-    if (std::string(check.what()).rfind("not a readable ROS bag", 0) != 0) throw;
     std::string copy =
         (std::filesystem::temp_directory_path() / "pedtrack-reindexed-XXXXXX.bag").string();
     const int fd = mkstemps(copy.data(), 4);
@@ -36,18 +34,23 @@ inline std::optional<BagRecovery> openBagForReading(rosbag::Bag& bag, const std:
     BagRecovery kept;
     try {
       kept = reindexBag(path, copy);
-      bag.open(copy, rosbag::bagmode::Read);
-    } catch (const DataError& e) {
+    } catch (const DataError&) {
       std::remove(copy.c_str());
-      // Damaged, not cut: the check names the first fault. No complete message: say so.
-      if (std::string(e.what()).find("no complete message") != std::string::npos) throw;
-      throw check;
+      throw check;  // not a bag, or damaged, not cut: the check names the first fault
+    }
+    if (kept.messages == 0) {
+      std::remove(copy.c_str());
+      throw DataError("not a readable ROS bag: no complete message before its data ends at byte " +
+                      std::to_string(kept.data_end));
+    }
+    try {
+      bag.open(copy, rosbag::bagmode::Read);
     } catch (...) {
       std::remove(copy.c_str());
       throw;
     }
     std::remove(copy.c_str());  // the open file stays readable until the bag is closed
-    if (kept.data_end == kept.file_size && kept.reason == "a damaged index") {
+    if (kept.cause == BagRecovery::Cause::DamagedIndex) {
       const std::string what = check.what();  // "not a readable ROS bag: FAULT at byte N"
       kept.reason += " (" + what.substr(what.find(": ") + 2) + ")";
     }

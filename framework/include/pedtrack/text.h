@@ -14,6 +14,8 @@ std::vector<std::string> splitFields(const std::string& line, char sep = ',');
 /// The message of an exception in one line: MRPT exceptions carry a multi-line header, location
 /// and call trace around their "Message:" line; other multi-line texts give their last line.
 std::string oneLine(const std::string& what);
+/// A number as a message shows it: up to 6 significant digits, no trailing zeros ("0.5", "10").
+std::string shortNumber(double v);
 
 /// Prints "warning: <prefix><message>" on stderr the first time each message is given: input
 /// that is wrong the same way in every frame is reported once, not thousands of times.

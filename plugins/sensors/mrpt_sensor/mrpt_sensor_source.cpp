@@ -19,7 +19,6 @@
 #include <ctime>
 #include <deque>
 #include <iostream>
-#include <sstream>
 #include <thread>
 
 #include "bounded_tcp_socket.h"
@@ -68,11 +67,6 @@ class SigpipeShield {
 
 double seconds(Clock::duration d) {
   return std::chrono::duration<double>(d).count();
-}
-std::string text(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
 }
 
 struct MrptSensorParams {
@@ -181,7 +175,7 @@ class MrptSensorSource : public Sensor {
       if (sensor_ && reconnecting() && reconnect_after_ > 0 &&
           seconds(now - std::max(call_start, opened_at_)) > reconnect_after_) {
         ++stalls_;
-        failed("no range data for " + text(reconnect_after_) + " s", false);
+        failed("no range data for " + shortNumber(reconnect_after_) + " s", false);
       }
       const double idle = seconds(now - call_start);
       if (idle_timeout_ > 0 && idle > idle_timeout_) {

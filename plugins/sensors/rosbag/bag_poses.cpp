@@ -102,10 +102,7 @@ bool BagPoses::tryTf(const std::string& target, const std::string& source, const
 
 bool BagPoses::odomAt(const ros::Time& t, mrpt::poses::CPose3D& out) const {
   if (odom_.empty()) return false;
-  // The last odometry at or before t (the first one before the odometry starts).
-  auto it = std::upper_bound(odom_.begin(), odom_.end(), t,
-                             [](const ros::Time& v, const auto& e) { return v < e.first; });
-  out = (it == odom_.begin() ? it : std::prev(it))->second;
+  out = odometryAt(odom_, t);
   return true;
 }
 
@@ -169,7 +166,11 @@ const ParamTable<RobotFrameParams>& robotFrameTable() {
           .real(&P::merge_window, "merge_window", "s", 0, 10,
                 "several topics: consecutive messages of distinct topics whose stamps span at "
                 "most this make one frame (below one scan period: 0.1 for 10 Hz scanners); 0: "
-                "one message per frame");
+                "one message per frame")
+          .text(&P::odom_topic, "odom_topic",
+                "nav_msgs/Odometry topic giving the robot's pose where /tf has no fixed_frame→"
+                "base_frame link (the last one at or before each scan's stamp; sensors then "
+                "placed by `mounts`); empty: none");
   return t;
 }
 

@@ -6,6 +6,8 @@
 #include <rosbag/bag.h>
 #include <tf2/buffer_core.h>
 
+#include <algorithm>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <string>
@@ -24,11 +26,21 @@ struct RobotFrameParams {
   std::string base_frame = "base_link";  ///< tf frame of the robot body
   std::string mounts;                    ///< mounting poses of sensors /tf does not place
   double merge_window = 0.1;             ///< s: messages of several topics within it are a frame
+  std::string odom_topic = "/odom";      ///< nav_msgs/Odometry where tf has no fixed→base link
 };
 const ParamTable<RobotFrameParams>& robotFrameTable();
 
 /// A tf transform as an MRPT pose.
 mrpt::poses::CPose3D toPose(const geometry_msgs::TransformStamped& t);
+
+/// The robot's odometry pose at `t`, from (stamp, pose) pairs sorted by stamp (not empty): the
+/// last at or before `t`, the first when `t` comes before them all. The rule of both ROS sources.
+template <typename Poses>
+const mrpt::poses::CPose3D& odometryAt(const Poses& odom, const ros::Time& t) {
+  auto it = std::upper_bound(odom.begin(), odom.end(), t,
+                             [](const ros::Time& v, const auto& e) { return v < e.first; });
+  return (it == odom.begin() ? it : std::prev(it))->second;
+}
 
 /// Mounting poses on the robot by topic, from the INI `mounts` key.
 using MountTable = std::map<std::string, mrpt::poses::CPose3D>;

@@ -35,7 +35,6 @@ struct RosbagParams {
   std::string file;
   std::string topic;  // comma list; empty: the bag's only scan topic
   RobotFrameParams frames;
-  std::string odom_topic = "/odom";  // nav_msgs/Odometry where tf has no fixed→base link
   ReplayRateParams rate;
 };
 
@@ -50,9 +49,6 @@ const ParamTable<RosbagParams>& table() {
                 "detector's people or legs, sensor frame) replay as detections, one frame a "
                 "message")
           .include(&P::frames, robotFrameTable())
-          .text(&P::odom_topic, "odom_topic",
-                "nav_msgs/Odometry topic used when tf has no fixed_frame→base_frame link; empty: "
-                "none")
           .include(&P::rate, replayRateTable());
   return t;
 }
@@ -76,8 +72,9 @@ class RosbagSource : public Sensor {
     checkMountTopics(mounts, usable_, mounts_key, "a scan topic of bag '" + file_ + "'");
     // One scanner's own frame is a fine robot frame; several need their mounts to line up.
     try {
-      poses_ = std::make_unique<BagPoses>(bag_, p.frames.fixed_frame, p.frames.base_frame,
-                                          p.odom_topic, std::move(mounts), topics.size() > 1);
+      poses_ =
+          std::make_unique<BagPoses>(bag_, p.frames.fixed_frame, p.frames.base_frame,
+                                     p.frames.odom_topic, std::move(mounts), topics.size() > 1);
     } catch (const ConfigError&) {
       throw;
     } catch (const std::exception& e) {  // a /tf or odometry message that cannot be read

@@ -54,6 +54,8 @@ UdpBatchReader::UdpBatchReader(const std::string& address, int port, int rcvbuf_
   port_ = ntohs(a.sin_port);
   data_.resize(batch_ * kSlot);
   control_.resize(batch_ * kControl);
+  msgs_.resize(batch_);
+  iov_.resize(batch_);
 }
 
 UdpBatchReader::~UdpBatchReader() {
@@ -66,27 +68,26 @@ std::size_t UdpBatchReader::read(int timeout_ms, const Each& each) {
   if (ready < 0 && errno != EINTR)
     throw DataError("UDP poll failed: " + std::string(strerror(errno)));
   if (ready <= 0) return 0;
-  std::vector<mmsghdr> msgs(batch_);
-  std::vector<iovec> iov(batch_);
   std::size_t total = 0;
   for (;;) {  // until the socket is drained
     for (std::size_t i = 0; i < batch_; ++i) {
-      iov[i] = {data_.data() + i * kSlot, kSlot};
-      msgs[i] = {};
-      msgs[i].msg_hdr.msg_iov = &iov[i];
-      msgs[i].msg_hdr.msg_iovlen = 1;
-      msgs[i].msg_hdr.msg_control = control_.data() + i * kControl;
-      msgs[i].msg_hdr.msg_controllen = kControl;
+      // recvmmsg writes the lengths back: every slot is set again before each call.
+      iov_[i] = {data_.data() + i * kSlot, kSlot};
+      msgs_[i] = {};
+      msgs_[i].msg_hdr.msg_iov = &iov_[i];
+      msgs_[i].msg_hdr.msg_iovlen = 1;
+      msgs_[i].msg_hdr.msg_control = control_.data() + i * kControl;
+      msgs_[i].msg_hdr.msg_controllen = kControl;
     }
     const int n =
-        ::recvmmsg(fd_, msgs.data(), static_cast<unsigned>(batch_), MSG_DONTWAIT, nullptr);
+        ::recvmmsg(fd_, msgs_.data(), static_cast<unsigned>(batch_), MSG_DONTWAIT, nullptr);
     if (n < 0) {
       if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) return total;
       throw DataError("UDP receive failed: " + std::string(strerror(errno)));
     }
     for (int i = 0; i < n; ++i) {
       double t = 0;
-      msghdr& h = msgs[i].msg_hdr;
+      msghdr& h = msgs_[i].msg_hdr;
       for (cmsghdr* c = CMSG_FIRSTHDR(&h); c; c = CMSG_NXTHDR(&h, c)) {
         if (c->cmsg_level != SOL_SOCKET) continue;
         if (c->cmsg_type == SCM_TIMESTAMPNS) {
@@ -103,7 +104,7 @@ std::size_t UdpBatchReader::read(int timeout_ms, const Each& each) {
         t = double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
       }
       // A datagram longer than the slot reports its whole length (MSG_TRUNC): refused by size.
-      const std::size_t size = (h.msg_flags & MSG_TRUNC) ? kSlot + 1 : msgs[i].msg_len;
+      const std::size_t size = (h.msg_flags & MSG_TRUNC) ? kSlot + 1 : msgs_[i].msg_len;
       each(data_.data() + std::size_t(i) * kSlot, size, t);
     }
     total += std::size_t(n);

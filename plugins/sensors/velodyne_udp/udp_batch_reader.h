@@ -3,6 +3,8 @@
 // receive buffer (SO_RCVBUFFORCE when permitted, else SO_RCVBUF up to net.core.rmem_max) rides
 // out a busy host, each datagram carries its kernel receive time (SO_TIMESTAMPNS) and the socket
 // reports how many datagrams the kernel dropped for want of buffer (SO_RXQ_OVFL).
+#include <sys/socket.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -32,8 +34,11 @@ class UdpBatchReader {
  private:
   int fd_ = -1, rcvbuf_ = 0, port_ = 0;
   std::uint32_t kernel_drops_ = 0;
-  std::vector<std::uint8_t> data_, control_;
   std::size_t batch_;
+  // One slot per datagram of a batch, set up once: read() runs thousands of times a second.
+  std::vector<std::uint8_t> data_, control_;
+  std::vector<mmsghdr> msgs_;
+  std::vector<iovec> iov_;
 };
 
 }  // namespace pedtrack::velodyne_udp

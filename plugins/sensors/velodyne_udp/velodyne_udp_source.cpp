@@ -112,7 +112,7 @@ class VelodyneUdpSource : public Sensor {
         const double idle = std::chrono::duration<double>(Clock::now() - since).count();
         if (idle_timeout_ > 0 && idle > idle_timeout_) {
           if (end_on_idle_) return false;
-          throw DataError("velodyne_udp: no revolution for " + text(idle_timeout_) + " s");
+          throw DataError("velodyne_udp: no revolution for " + shortNumber(idle_timeout_) + " s");
         }
         cv_.wait_for(lk, std::chrono::milliseconds(100));
       }
@@ -148,13 +148,6 @@ class VelodyneUdpSource : public Sensor {
   }
 
  private:
-  static std::string text(double v) {
-    std::string s = std::to_string(v);
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
-  }
-
   // The reading thread: drains the socket, never waits for the pipeline.
   void readLoop() {
     Revolution done;
