@@ -9,13 +9,13 @@
 #include <optional>
 
 #include "leg_people/leg_people_tracker.h"
-#include "pedtrack/track/static_scene.h"
 #include "pedtrack/errors.h"
 #include "pedtrack/ipopt/gait_fit.h"
 #include "pedtrack/param_table.h"
 #include "pedtrack/plugin.h"
 #include "pedtrack/point_labels.h"
 #include "pedtrack/track/leg_pose_params.h"
+#include "pedtrack/track/static_scene.h"
 
 namespace pedtrack::legpeople {
 namespace {
@@ -272,6 +272,7 @@ class LegPeople : public Tracker {
       if (points.empty()) points = keptPoints(f);
       return hiddenBehind(f, {x, y}, half_width, points);
     };
+    tracker_.setFollowed(followed_);
     tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f), !f.motion_unknown, expected,
                   occluded);
     if (scene_ && !f.motion_unknown) scene_->update(f, tracker_.occupiedByPeople());

@@ -134,6 +134,12 @@ void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs
   }
 }
 
+LegPeopleTracker::Person* LegPeopleTracker::personById(long id) {
+  for (auto& q : people_)
+    if (q->id == id) return q.get();
+  return nullptr;
+}
+
 // How long a person with no leg seen is kept. A confirmed person lost in a crowd or out of the
 // scanner's view comes back most often where re-identification (lostPersonNear) finds them, and
 // then needs no second confirmation; the longer they were seen while confirmed (time lost does
@@ -219,7 +225,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // person whose gait still predicts it, any object from moving_leg_score on: below).
     for (int side = 0; side < 2; ++side) {
       long& slot = side == 0 ? P.left : P.right;
-      if (slot >= 0) continue;
+      // The followed person's leg object unseen this scan is replaced, like a missing one, by a
+      // seen object where the gait predicts that leg (see followed_).
+      const bool followed = P.confirmed && P.id == followed_;
+      Object* held = slot >= 0 ? findObject(objects_, slot) : nullptr;
+      if (slot >= 0 && !(followed && held && held->det < 0)) continue;
       const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();
       Object* best = nullptr;
       // A confirmed person's gait predicts where their leg is: an object found there needs only
@@ -235,7 +245,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       if (P.confirmed && motion_known_)
         bd += std::min(p_.reacquire_spread * (t - P.last_seen), p_.reacquire_max);
       for (auto& o : objects_) {
-        if (o->person >= 0 || o->det < 0 || o->shunned) continue;
+        if (o->det < 0 || o->shunned) continue;
+        if (o->person >= 0) {  // only the followed person takes a tentative person's leg
+          const Person* owner = personById(o->person);
+          if (!followed || !owner || owner->confirmed) continue;
+        }
         const double d = (o->pos() - want).norm();
         const bool leg_enough = legLike(*o) || (predicted && o->meanScore() >= p_.moving_leg_score);
         if (d >= bd || !leg_enough) continue;
@@ -245,6 +259,10 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
         bd = d, best = o.get();
       }
       if (!best) continue;
+      if (Person* owner = best->person >= 0 ? personById(best->person) : nullptr)
+        for (long* leg : {&owner->left, &owner->right})
+          if (*leg == best->id) *leg = -1;
+      if (held) held->person = -1;
       best->person = P.id;
       slot = best->id;
       // A tentative person proves itself by walking on its own legs: one that hops from object to
