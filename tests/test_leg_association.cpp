@@ -37,12 +37,13 @@ double drift(double standing_gate) {
   return worst;
 }
 
-// The walker of walkThenStand, standing at (-0.5, 0), followed when `follow`: their left leg
-// goes unseen for 0.6 s (its object is dropped) while two objects 0.5 and 0.75 m to their left
-// form a tentative person; then the nearer of those shows 0.21 m from where the followee's gait
-// predicts their left leg, for 5 scans. Returns the followee's estimated y then (the midpoint of
-// their legs, 0.105, once the leg is theirs; their right leg is at y = -0.09).
-double followeeY(bool follow) {
+// The walker of walkThenStand, standing at (-0.5, 0), followed when `follow`, the robot's motion
+// known or not from then on: their left leg goes unseen for 0.6 s (its object is dropped) while two
+// objects 0.5 and 0.75 m to their left form a tentative person; then the nearer of those shows 0.21
+// m from where the followee's gait predicts their left leg, for 5 scans. Returns the followee's
+// estimated y then (the midpoint of their legs, 0.105, once the leg is theirs; their right leg is
+// at y = -0.09).
+double followeeY(bool follow, bool motion_known) {
   LegPeopleTracker tr{LegPeopleParams{}};
   double t = 0;
   const long id = pedtrack::test::walkThenStand(tr, t, 40);
@@ -52,14 +53,14 @@ double followeeY(bool follow) {
   const Eigen::Vector2d near_first(-0.5, 0.59), near_then(-0.5, 0.3), far(-0.5, 0.84);
   for (int k = 0; k < 6; ++k, t += 0.1)
     tr.step(t, {{right, 0.9, sensor, -1}, {near_first, 0.9, sensor, -1}, {far, 0.9, sensor, -1}},
-            {});
+            {}, {}, motion_known);
   bool tentative_beside = false;
   for (const PersonState& s : tr.people()) tentative_beside |= !s.confirmed && s.seen;
   REQUIRE(tentative_beside);
   double y = NAN;
   for (int k = 0; k < 5; ++k, t += 0.1) {
-    tr.step(t, {{right, 0.9, sensor, -1}, {near_then, 0.9, sensor, -1}, {far, 0.9, sensor, -1}},
-            {});
+    tr.step(t, {{right, 0.9, sensor, -1}, {near_then, 0.9, sensor, -1}, {far, 0.9, sensor, -1}}, {},
+            {}, motion_known);
     for (const PersonState& s : tr.people())
       if (s.id == id) y = s.p.y();
   }
@@ -74,10 +75,13 @@ TEST_CASE("a standing person's leg does not slide onto clutter beside it (standi
   CHECK(drift(0) > 0.1);  // the general gate: the leg takes the bag, the person follows
 }
 
-TEST_CASE("the followed person takes a tentative person's leg where their own is predicted",
+TEST_CASE("where the motion is unknown the followed person takes a leg where theirs is predicted",
           "[legs]") {
-  const double followed = followeeY(true), not_followed = followeeY(false);
+  // Where the robot's motion is unknown: only the followed person takes it.
+  const double followed = followeeY(true, false), not_followed = followeeY(false, false);
   INFO("followed " << followed << ", not followed " << not_followed);
   CHECK(followed == Catch::Detail::Approx(0.105).margin(0.03));
   CHECK(not_followed < 0.05);  // the leg stays the tentative person's
+  // Where it is known, a tentative person beside the followee keeps its legs.
+  CHECK(followeeY(true, true) < 0.05);
 }

@@ -225,9 +225,10 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // person whose gait still predicts it, any object from moving_leg_score on: below).
     for (int side = 0; side < 2; ++side) {
       long& slot = side == 0 ? P.left : P.right;
-      // The followed person's leg object unseen this scan is replaced, like a missing one, by a
-      // seen object where the gait predicts that leg (see followed_).
-      const bool followed = P.confirmed && P.id == followed_;
+      // Where the robot's motion is unknown, the followed person's leg object unseen this scan is
+      // replaced, like a missing one, by a seen object where the gait predicts that leg, and a
+      // tentative person's leg there becomes theirs (see followed_).
+      const bool followed = P.confirmed && P.id == followed_ && !motion_known_;
       Object* held = slot >= 0 ? findObject(objects_, slot) : nullptr;
       if (slot >= 0 && !(followed && held && held->det < 0)) continue;
       const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();

@@ -347,13 +347,16 @@ class LegPeopleTracker {
   bool started_ = false;
   bool classified_ = false;   // some leg so far was scored by a classifier (sure_leg_score)
   bool motion_known_ = true;  // this scan's: see step()
-  // The followed person (setFollowed) has the first claim on legs where their gait predicts
-  // them: a leg object of theirs unseen this scan gives way to a seen one there, and a tentative
-  // person's leg there becomes theirs. On the outdoor following recording a tentative person
-  // formed on the followee's far leg while their own leg object, unseen, drifted off on its
-  // velocity; the followee then coasted on one leg and eq. 6's inferred leg, 0.3 m off. Only
-  // for the followed person: for everyone it cost static crowds 0.003-0.012 MOTA (new people
-  // confirmed later).
+  // Where the robot's motion is unknown, the followed person (setFollowed) has the first claim
+  // on legs where their gait predicts them: a leg object of theirs unseen this scan gives way to
+  // a seen one there, and a tentative person's leg there becomes theirs. The frame then moves by
+  // an unknown amount, an unseen leg object drifts off on a velocity that is partly the robot's,
+  // and new people form on the followee's own legs: on the outdoor following recording a
+  // tentative person took the followee's far leg, who then coasted on one leg and eq. 6's
+  // inferred one, 0.3 m off. Where the motion is known the legs' predictions hold and a
+  // tentative person beside the followee is most often a passer-by (the rule there cost
+  // simulated following 0.003 MOTA); for everyone, not just the followee, it cost static crowds
+  // 0.003-0.012 MOTA (new people confirmed later).
   long followed_ = 0;
   std::function<bool(double, double)> expected_;          // this scan's: see step()
   std::function<bool(double, double, double)> occluded_;  // this scan's: see step()
