@@ -54,7 +54,8 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "largest distance from a predicted leg to the leg it is associated with")
           .real(&T::standing_gate, "standing_gate", "m", 0, 10,
                 "the gate of a standing confirmed person's legs (centre moved < 0.2 m in the "
-                "last second): a leg at rest does not jump, its detection dropped while "
+                "last second), and of a tentative person's standing 0.3 s in follow_zone while "
+                "nobody is followed: a leg at rest does not jump, its detection dropped while "
                 "clutter beside them was seen; 0: gate for everyone")
           .real(&T::object_max_coast, "object_max_coast", "s", 0, 3600,
                 "a leg or clutter track unseen this long is dropped")

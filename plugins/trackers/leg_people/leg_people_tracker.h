@@ -75,11 +75,12 @@ struct LegPeopleParams {
   double object_sigma = 0.03;  ///< m, leg centre measurement noise
   double gate = 0.45;          ///< m, largest object-to-cluster distance of an association
   /// m, the gate of a standing confirmed person's legs (their centre moved less than 0.2 m over
-  /// the last second): a leg at rest does not jump 0.45 m within a scan; it is its detection that
-  /// dropped while clutter beside the person was seen. On the outdoor following recording a
-  /// standing followee's leg slid onto a bag or passing clutter 0.2-0.45 m away and dragged the
-  /// track off (ID switches 6.1 -> 2.9, tracks on no one 0.63 -> 0.54 per scan, MOTP 0.104 ->
-  /// 0.096 m; 0.15 lost the legs of a person starting to walk: misses 53 -> 74). 0: off.
+  /// the last second), and of a tentative person standing 0.3 s where a person is expected
+  /// (step's `expected`: the follow zone): a leg at rest does not jump 0.45 m within a scan; it is
+  /// its detection that dropped while clutter beside the person was seen. On the outdoor following
+  /// recording a standing followee's leg slid onto a bag or passing clutter 0.2-0.45 m away and
+  /// dragged the track off (ID switches 6.1 -> 2.9, tracks on no one 0.63 -> 0.54 per scan, MOTP
+  /// 0.104 -> 0.096 m; 0.15 lost the legs of a person starting to walk: misses 53 -> 74). 0: off.
   double standing_gate = 0.25;
   double object_max_coast = 0.5;  ///< s, an object unseen this long is dropped
   /// Objects with a mean classifier score ≥ this are leg-like. The shipped leg models are
