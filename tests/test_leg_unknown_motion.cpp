@@ -3,7 +3,8 @@
 // clutter moves in it as the robot drives. A tentative person is then confirmed by their legs'
 // scissoring alone (confirm_stride), never by travel; a rigid pair slid and turned by the robot
 // never is; a person standing where one is expected (a following robot's zone) is confirmed
-// after follow_confirm_time, through a scan that misses them and clutter beside them.
+// after follow_confirm_time, through a scan that misses them and clutter beside them; a person's
+// velocity is not carried through a scan where the motion is unknown (unknown_motion_tau).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
@@ -122,6 +123,30 @@ TEST_CASE("a person waiting to be followed is confirmed through a missed scan an
   const auto [late, dragged] = run(0);
   CHECK(late > 0.8);
   CHECK(dragged > 0.1);
+}
+
+TEST_CASE("where the motion is unknown a person's velocity decays before the prediction",
+          "[legs]") {
+  // A walker along +x at 1 m/s, legs scissoring, confirmed with the motion known; then one scan
+  // (0.1 s) sees neither leg. Returns how far their estimate moved in that scan.
+  auto advance = [](double tau, bool motion_known) {
+    LegPeopleParams p;
+    p.unknown_motion_tau = tau;
+    LegPeopleTracker tr(p);
+    for (int k = 0; k <= 20; ++k) {
+      const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
+      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, kSensor, 0}, {{x - lp / 2, -0.09}, 0.9, kSensor, 1}},
+              {});
+    }
+    REQUIRE(anyConfirmed(tr));
+    const Eigen::Vector2d before = tr.people().front().p;
+    tr.step(2.1, {}, {}, {}, motion_known);
+    return (tr.people().front().p - before).norm();
+  };
+  // Known motion: the walk goes on (~0.1 m). Unknown, tau 0.1 s: e^-1 of it.
+  CHECK(advance(0.1, true) == Catch::Detail::Approx(0.1).margin(0.03));
+  CHECK(advance(0.1, false) == Catch::Detail::Approx(0.1 * std::exp(-1.0)).margin(0.02));
+  CHECK(advance(0, false) == Catch::Detail::Approx(advance(0.1, true)).margin(0.005));  // off
 }
 
 TEST_CASE("where the motion is unknown a lost person is re-identified only where predicted",

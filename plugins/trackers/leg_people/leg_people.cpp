@@ -57,6 +57,10 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "last second), and of a tentative person's standing 0.3 s in follow_zone while "
                 "nobody is followed: a leg at rest does not jump, its detection dropped while "
                 "clutter beside them was seen; 0: gate for everyone")
+          .real(&T::unknown_motion_tau, "unknown_motion_tau", "s", 0, 3600,
+                "where the robot's motion is unknown (Frame::motion_unknown), a person's "
+                "velocity decays with this time constant before each prediction: in the "
+                "tracking frame it is theirs less the robot's, which turns; 0: off")
           .real(&T::object_max_coast, "object_max_coast", "s", 0, 3600,
                 "a leg or clutter track unseen this long is dropped")
           .real(&T::leg_score, "leg_score", "", 0, 1,

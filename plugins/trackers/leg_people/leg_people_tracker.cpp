@@ -60,6 +60,11 @@ void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
     o->det = -1;
   }
   for (auto& person : people_) {
+    // Where the robot's motion is unknown a person's velocity in the tracking frame is theirs
+    // less the robot's, which changes as the robot turns and speeds up: it predicts little
+    // beyond a scan (unknown_motion_tau).
+    if (!motion_known_ && p_.unknown_motion_tau > 0 && dt > 0)
+      person->est.setVelocity(std::exp(-dt / p_.unknown_motion_tau) * person->est.velocity());
     person->est.predict(t);
     if (Object* o = findObject(objects_, person->left)) o->predicted = person->est.predictedLeft();
     if (Object* o = findObject(objects_, person->right))
