@@ -1,7 +1,8 @@
 #pragma once
 // Shared by the leg tests (test_legs.cpp, test_leg_pose_parts.cpp, test_leg_pose_estimator.cpp,
-// test_leg_one_leg_stand.cpp): a synthetic walker's legs, the angle between two headings, and a
-// walker who stops and stands in front of leg_people's tracker.
+// test_leg_one_leg_stand.cpp, test_leg_association.cpp, test_leg_unknown_motion.cpp): a synthetic
+// walker's legs, the angle between two headings, and a walker who stops and stands in front of
+// leg_people's tracker.
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "leg_people/leg_people_tracker.h"
+#include "leg_walker.h"
 
 using namespace pedtrack::track;
 
@@ -127,20 +128,18 @@ TEST_CASE("a person waiting to be followed is confirmed through a missed scan an
 
 TEST_CASE("where the motion is unknown a person's velocity decays before the prediction",
           "[legs]") {
-  // A walker along +x at 1 m/s, legs scissoring, confirmed with the motion known; then one scan
-  // (0.1 s) sees neither leg. Returns how far their estimate moved in that scan.
+  // walkThenStand's walker along +x at 1 m/s, legs scissoring, confirmed with the motion known
+  // while still walking (1.4 m); then one scan (0.1 s) sees neither leg. Returns how far their
+  // estimate moved in that scan.
   auto advance = [](double tau, bool motion_known) {
     LegPeopleParams p;
     p.unknown_motion_tau = tau;
     LegPeopleTracker tr(p);
-    for (int k = 0; k <= 20; ++k) {
-      const double t = 0.1 * k, x = -2 + t, lp = 0.25 * std::sin(2 * M_PI * 0.9 * t);
-      tr.step(t, {{{x + lp / 2, 0.09}, 0.9, kSensor, 0}, {{x - lp / 2, -0.09}, 0.9, kSensor, 1}},
-              {});
-    }
-    REQUIRE(anyConfirmed(tr));
+    double t = 0;
+    const long id = pedtrack::test::walkThenStand(tr, t, 15);
+    REQUIRE(id > 0);
     const Eigen::Vector2d before = tr.people().front().p;
-    tr.step(2.1, {}, {}, {}, motion_known);
+    tr.step(t, {}, {}, {}, motion_known);
     return (tr.people().front().p - before).norm();
   };
   // Known motion: the walk goes on (~0.1 m). Unknown, tau 0.1 s: e^-1 of it.

@@ -239,13 +239,13 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     if (ro && ro->det >= 0) r = {true, ro->pos()};
     // A free leg-like object near the person's missing leg becomes that leg (for a confirmed
     // person whose gait still predicts it, any object from moving_leg_score on: below).
+    // Where the robot's motion is unknown, the followed person's leg object unseen this scan is
+    // replaced, like a missing one, by a seen object where the gait predicts that leg, and a
+    // tentative person's leg there becomes theirs (see followed_).
+    const bool followed = P.confirmed && P.id == followed_ && !motion_known_;
     for (int side = 0; side < 2; ++side) {
       long& slot = side == 0 ? P.left : P.right;
-      // Where the robot's motion is unknown, the followed person's leg object unseen this scan is
-      // replaced, like a missing one, by a seen object where the gait predicts that leg, and a
-      // tentative person's leg there becomes theirs (see followed_).
-      const bool followed = P.confirmed && P.id == followed_ && !motion_known_;
-      Object* held = slot >= 0 ? findObject(objects_, slot) : nullptr;
+      Object* held = side == 0 ? lo : ro;
       if (slot >= 0 && !(followed && held && held->det < 0)) continue;
       const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();
       Object* best = nullptr;
@@ -389,10 +389,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // A scan that sees neither leg (a dropout: on the outdoor following recording two scans
     // within 0.3 s missed a standing followee whole) says nothing against their standing there.
     const bool dropout = !P.seen && t - P.last_seen <= kDropoutGap;
-    if (!both_expected && !dropout)
+    if (both_expected) {
+      if (std::isnan(P.expected_since)) P.expected_since = t;
+    } else if (!dropout) {
       P.expected_since = NAN;
-    else if (std::isnan(P.expected_since))
-      P.expected_since = t;
+    }
     const bool stood_expected = p_.follow_confirm_time > 0 && both_expected &&
                                 t - P.expected_since >= p_.follow_confirm_time;
     const bool walked = strode && P.travelled >= travel &&
