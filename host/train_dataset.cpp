@@ -20,6 +20,7 @@
 #include "pedtrack/progress.h"
 #include "pedtrack/sim/simulator.h"
 #include "pedtrack/text.h"
+#include "scan_thinning.h"
 #ifdef PEDTRACK_WITH_ROSBAG
 #include "eval_bag.h"
 #endif
@@ -55,6 +56,10 @@ const ParamTable<Dataset>& datasetTable() {
                 "clusters farther from the sensor are left out (0: no limit)")
           .real(&P::match_distance, "match_distance", "m", 0.001, 10,
                 "a label marks the cluster whose centroid is nearest, within this")
+          .text(&P::beam_steps, "beam_steps",
+                "recordings: also learn from every Nth beam of each 2D scan, for each N listed "
+                "(1: as recorded). A leg is then sampled as at N times its range, and its "
+                "distance feature says so; training legs recorded near reach the far ones")
           .real(&P::purity, "purity", "", 0.5, 1,
                 "sim: a cluster is a person when this share of its points is one person's, a "
                 "non-person when at most 1 - this share is anyone's; else mixed (left out)");
@@ -144,6 +149,14 @@ Dataset loadDataset(const std::string& path) {
       have_dataset = true;
       datasetTable().readInto(p, d);  // the keys' members only
       d.pipeline = anchored(dir, d.pipeline);
+      d.steps.clear();
+      const std::string where = datasetTable().where(p, &Dataset::beam_steps);
+      for (double v : parseNumbers(d.beam_steps, 0, where)) {
+        if (!(v >= 1 && v <= 20 && v == std::floor(v)))
+          throw ConfigError(where + ": " + shortestNumber(v) + " is no whole step from 1 to 20");
+        d.steps.push_back(int(v));
+      }
+      if (d.steps.empty()) throw ConfigError(where + ": no step (1: the scans as recorded)");
     } else if (kind == "sim.NAME") {
       DatasetInput in = simInputTable().read(p);
       in.kind = DatasetInput::Kind::Sim;
@@ -191,6 +204,7 @@ static std::string portable(const std::string& path) {
 std::string Dataset::describe() const {
   std::ostringstream o;
   o << "pipeline " << pipeline << "; frame_step " << frame_step;
+  if (steps != std::vector<int>{1}) o << "; beam_steps " << beam_steps;
   if (min_range > 0 || max_range > 0) o << "; range " << min_range << "-" << max_range << " m";
   for (const auto& in : inputs) {
     o << "; " << in.name << ": ";
@@ -248,10 +262,11 @@ struct Segmentation {
   std::vector<Stage*> segmenters;
 };
 
-// Adds the frame's clusters that `label` labels (nullopt: left out).
+// Adds the frame's clusters that `label` labels (-1: left out).
+// range_scale: the frame's scans were thinned to look range_scale times farther (beam_steps).
 template <class LabelFn>
-void addClusters(const Dataset& d, const Frame& f, SampleSet& out, CollectStats& st,
-                 LabelFn label) {
+void addClusters(const Dataset& d, const Frame& f, SampleSet& out, CollectStats& st, LabelFn label,
+                 double range_scale) {
   if (f.clusters.empty()) return;
   if (!f.cluster_feature_names)
     throw ConfigError(d.pipeline + ": the segmenters give the clusters no features");
@@ -259,9 +274,11 @@ void addClusters(const Dataset& d, const Frame& f, SampleSet& out, CollectStats&
   if (*f.cluster_feature_names != out.features)
     throw ConfigError(d.pipeline + ": the segmenters' features changed between frames");
   const auto mount = f.sensorMount();
+  const int distance = f.clusterFeatureIndex("distance");
+  std::vector<double> x;
   for (std::size_t c = 0; c < f.clusters.size(); ++c) {
     const Cluster& cl = f.clusters[c];
-    const double r = std::hypot(cl.cx - mount.x(), cl.cy - mount.y());
+    const double r = range_scale * std::hypot(cl.cx - mount.x(), cl.cy - mount.y());
     if (r < d.min_range || (d.max_range > 0 && r > d.max_range)) {
       ++st.out_of_range;
       continue;
@@ -271,7 +288,10 @@ void addClusters(const Dataset& d, const Frame& f, SampleSet& out, CollectStats&
     for (double v : cl.features) finite = finite && std::isfinite(v);
     if (!finite) continue;
     const int l = label(c);
-    if (l >= 0) out.add(cl.features.data(), Label(l));
+    if (l < 0) continue;
+    x = cl.features;
+    if (distance >= 0) x[std::size_t(distance)] *= range_scale;
+    out.add(x.data(), Label(l));
   }
 }
 
@@ -293,22 +313,25 @@ void collectSim(const Dataset& d, const DatasetInput& in, const PluginRegistry& 
     seg.process(f);
     ++st.frames;
     std::map<std::int32_t, std::size_t> owners;
-    addClusters(d, f, out, st, [&](std::size_t c) {
-      const auto& idx = f.clusters[c].indices;
-      owners.clear();
-      std::size_t people = 0;
-      for (std::uint32_t i : idx) {
-        const std::int32_t o = i < sf.point_truth.size() ? sf.point_truth[i] : 0;
-        if (o > 0) ++owners[o], ++people;
-      }
-      std::size_t top = 0;
-      for (const auto& [o, n] : owners) top = std::max(top, n);
-      const double n = double(std::max<std::size_t>(idx.size(), 1));
-      if (top >= d.purity * n) return int(Label::Person);
-      if (people <= (1 - d.purity) * n) return int(Label::NonPerson);
-      ++st.mixed;
-      return -1;
-    });
+    addClusters(
+        d, f, out, st,
+        [&](std::size_t c) {
+          const auto& idx = f.clusters[c].indices;
+          owners.clear();
+          std::size_t people = 0;
+          for (std::uint32_t i : idx) {
+            const std::int32_t o = i < sf.point_truth.size() ? sf.point_truth[i] : 0;
+            if (o > 0) ++owners[o], ++people;
+          }
+          std::size_t top = 0;
+          for (const auto& [o, n] : owners) top = std::max(top, n);
+          const double n = double(std::max<std::size_t>(idx.size(), 1));
+          if (top >= d.purity * n) return int(Label::Person);
+          if (people <= (1 - d.purity) * n) return int(Label::NonPerson);
+          ++st.mixed;
+          return -1;
+        },
+        1.0);
     prog.update(k + 1, double(k + 1) / double(std::max<std::size_t>(sim.frameCount(), 1)));
   }
   prog.done(sim.frameCount());
@@ -328,28 +351,12 @@ void collectRecording(const Dataset& d, const DatasetInput& in, const PluginRegi
     throw ConfigError(in.file + ": labels_topic needs ROS bag support (PEDTRACK_WITH_ROSBAG)");
 #endif
   }
-  Progress prog(in.name, progress);
-  Frame f;
-  std::size_t k = 0;
-  for (;; ++k) {
-    f = Frame();
-    f.index = k;
-    if (!seg.pipeline.source().next(f)) break;
-    const double at = seg.pipeline.source().progress();
-    prog.update(k + 1, at);
-    if (at >= 0 && at <= in.part_from) continue;
-    if (at > in.part_to) break;
-    if (k % std::size_t(d.frame_step)) continue;
-    try {
-      seg.process(f);
-    } catch (const DataError& e) {
-      std::cerr << "warning: " << in.name << " frame " << k << ": " << e.what() << "\n";
-      continue;
-    }
-    ++st.frames;
+  // Labels a segmented frame's clusters and adds them (step: its beams were thinned by this).
+  auto learnFrom = [&](const Frame& f, int step) {
     if (in.kind == DatasetInput::Kind::Negative) {
-      addClusters(d, f, out, st, [](std::size_t) { return int(Label::NonPerson); });
-      continue;
+      addClusters(
+          d, f, out, st, [](std::size_t) { return int(Label::NonPerson); }, step);
+      return;
     }
     // Positives: cluster centroids in the sensor frame, against labels or the region.
     const auto mount = f.sensorMount();
@@ -372,18 +379,46 @@ void collectRecording(const Dataset& d, const DatasetInput& in, const PluginRegi
       if (it != labels.end() && it->t <= f.t + 1e-4) {
         // Greedy nearest pairs, each cluster marked by at most one label.
         for (const auto& o : it->objects) {
-          ++st.labels;
+          if (step == 1) ++st.labels;  // each label counted once, not once per step
           int best = -1;
           double best_d = d.match_distance;
           for (std::size_t c = 0; c < at_sensor.size(); ++c) {
             const double dist = std::hypot(at_sensor[c].first - o.x, at_sensor[c].second - o.y);
             if (label[c] < 0 && dist <= best_d) best = int(c), best_d = dist;
           }
-          if (best >= 0) label[std::size_t(best)] = int(Label::Person), ++st.labels_matched;
+          if (best < 0) continue;
+          label[std::size_t(best)] = int(Label::Person);
+          if (step == 1) ++st.labels_matched;
         }
       }
     }
-    addClusters(d, f, out, st, [&](std::size_t c) { return label[c]; });
+    addClusters(
+        d, f, out, st, [&](std::size_t c) { return label[c]; }, step);
+  };
+  Progress prog(in.name, progress);
+  Frame f;
+  std::size_t k = 0;
+  for (;; ++k) {
+    f = Frame();
+    f.index = k;
+    if (!seg.pipeline.source().next(f)) break;
+    const double at = seg.pipeline.source().progress();
+    prog.update(k + 1, at);
+    if (at >= 0 && at <= in.part_from) continue;
+    if (at > in.part_to) break;
+    if (k % std::size_t(d.frame_step)) continue;
+    ++st.frames;
+    for (int step : d.steps) {
+      // Each step starts its beams at another offset from frame to frame.
+      Frame g = thinnedFrame(f, step, int(k / std::size_t(d.frame_step) % std::size_t(step)));
+      try {
+        seg.process(g);
+      } catch (const DataError& e) {
+        std::cerr << "warning: " << in.name << " frame " << k << ": " << e.what() << "\n";
+        continue;
+      }
+      learnFrom(g, step);
+    }
   }
   prog.done(k);
 }

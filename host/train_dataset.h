@@ -34,6 +34,10 @@ struct Dataset {
   double min_range = 0,
          max_range = 0;          ///< m from the sensor; clusters outside are left out (0: no limit)
   double match_distance = 0.15;  ///< m, label ↔ cluster centroid (positive recordings)
+  /// Recordings are also learnt from with every Nth beam of each 2D scan, for each N here
+  /// (1: the scans as recorded): legs seen as the full scan sees them N times farther away.
+  std::string beam_steps = "1";
+  std::vector<int> steps{1};  ///< beam_steps, parsed
   double purity = 0.8;  ///< share of one person's points that makes a person (and 1 − it, of all
                         ///< people's, a non-person)
   std::vector<std::string>

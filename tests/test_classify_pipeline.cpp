@@ -1,6 +1,8 @@
 // Classifiers end to end: the shipped detection pipelines with the shipped models, `pedtrack
 // train` and `pedtrack eval --model` on held-out simulated scenes and on leg_tracker's real bags.
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -170,4 +172,68 @@ TEST_CASE("real legs: leg_tracker positives 6-7 and the second half of negative_
     CHECK(jsonNumber(out, "persons") == 688);  // every labelled leg of bags 6-7 is a segment
     CHECK(jsonNumber(out, "auc") >= 0.88);
   }
+}
+
+TEST_CASE("beam_steps: legs learnt again from thinned scans stand in for legs farther away",
+          "[classify][data]") {
+  const std::string dir = freshDir("classify_beam_steps");
+  auto dataset = [&](const std::string& steps, const std::string& file) {
+    std::ofstream(dir + "/" + file) << "[dataset]\npipeline = " << kConfigs
+                                    << "detect_legs.ini\nframe_step = 5\nbeam_steps = " << steps
+                                    << "\n[recording.pos6]\nkind = positive\nfile = "
+                                       "${PEDTRACK_DATA}/leg_tracker/positive_6_extracted.bag\n"
+                                       "topic = /training_scan\n"
+                                       "labels_topic = /leg_cluster_positions\n"
+                                       "[recording.neg]\nkind = negative\nfile = "
+                                       "${PEDTRACK_DATA}/leg_tracker/negative_2.bag\n"
+                                       "topic = /left_scan\npart = 0 0.05\n";
+    return dir + "/" + file;
+  };
+  // A step that is no whole number is one line naming the key, before any input is read.
+  const auto bad =
+      runHost({"train", "svm", dataset("1 2.5", "bad.ini"), "--out", dir + "/bad.yml", "-q"});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("[dataset] beam_steps: 2.5 is no whole step") != std::string::npos);
+#ifndef PEDTRACK_WITH_ROSBAG
+  WARN("built without ROS bag support: beam_steps not run on a recording");
+  return;
+#endif
+  const std::string data = sharedDataDir();
+  requireData(data.empty() ? "" : data + "/leg_tracker/positive_6_extracted.bag");
+  setenv("PEDTRACK_DATA", data.c_str(), 1);
+  // The persons' distance feature, as saved with the samples.
+  auto personDistances = [&](const std::string& steps) {
+    const std::string csv = dir + "/samples_" + std::to_string(steps.size()) + ".csv";
+    const auto r = runHost({"train", "knn", dataset(steps, "d.ini"), "--out", dir + "/m.yml",
+                            "--save-samples", csv, "-q"});
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> head;
+    std::stringstream hs(line);
+    for (std::string c; std::getline(hs, c, ',');) head.push_back(c);
+    const auto col = [&](const std::string& n) {
+      return std::size_t(std::find(head.begin(), head.end(), n) - head.begin());
+    };
+    const std::size_t label = col("label"), distance = col("distance");
+    REQUIRE(distance < head.size());
+    std::vector<double> out;
+    while (std::getline(in, line)) {
+      std::vector<std::string> v;
+      std::stringstream ls(line);
+      for (std::string c; std::getline(ls, c, ',');) v.push_back(c);
+      if (v.at(label) == "1") out.push_back(std::stod(v.at(distance)));
+    }
+    return out;
+  };
+  const auto recorded = personDistances("1");
+  const auto thinned = personDistances("1 3");
+  REQUIRE(!recorded.empty());
+  const double reach = *std::max_element(recorded.begin(), recorded.end());
+  // The thinned copies add legs, some of them beyond any recorded one (a leg thinned by 3 keeps
+  // 3 or more returns only where it had 9, so not every leg has a copy).
+  CHECK(thinned.size() > recorded.size());
+  CHECK(*std::max_element(thinned.begin(), thinned.end()) > reach);
 }
