@@ -407,16 +407,20 @@ void collectRecording(const Dataset& d, const DatasetInput& in, const PluginRegi
     if (at >= 0 && at <= in.part_from) continue;
     if (at > in.part_to) break;
     if (k % std::size_t(d.frame_step)) continue;
-    ++st.frames;
     for (int step : d.steps) {
-      // Each step starts its beams at another offset from frame to frame.
-      Frame g = thinnedFrame(f, step, int(k / std::size_t(d.frame_step) % std::size_t(step)));
+      // Step 1 is the frame as read; each other step starts its beams at another offset from
+      // frame to frame.
+      Frame thinned;
+      if (step > 1)
+        thinned = thinnedFrame(f, step, int(k / std::size_t(d.frame_step) % std::size_t(step)));
+      Frame& g = step > 1 ? thinned : f;
       try {
         seg.process(g);
       } catch (const DataError& e) {
         std::cerr << "warning: " << in.name << " frame " << k << ": " << e.what() << "\n";
         continue;
       }
+      if (step == d.steps.front()) ++st.frames;  // frames read, not once per step
       learnFrom(g, step);
     }
   }
