@@ -26,13 +26,7 @@ namespace {
 // every point repeated with up to 2 cm of jitter — a denser sensor seeing the same scene.
 Frame resampled(const Frame& f, std::size_t n, std::mt19937& rng) {
   const auto& src = f.cloud();
-  Frame g;
-  g.index = f.index;
-  g.t = f.t;
-  g.robot_pose = f.robot_pose;
-  g.has_odometry = f.has_odometry;
-  g.sensor_pose = f.sensor_pose;
-  g.sensors = f.sensors;
+  Frame g = f.sameTimeAndPoses();
   mrpt::Clock::time_point stamp{};
   for (const auto& obs : f.observations) {
     if (!isRangeObservation(*obs))

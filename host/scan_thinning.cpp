@@ -36,14 +36,7 @@ CObservation2DRangeScan::Ptr thinnedScan(const CObservation2DRangeScan& s, int s
 }  // namespace
 
 Frame thinnedFrame(const Frame& f, int step, int offset) {
-  Frame g;
-  g.index = f.index;
-  g.t = f.t;
-  g.robot_pose = f.robot_pose;
-  g.has_odometry = f.has_odometry;
-  g.motion_unknown = f.motion_unknown;
-  g.sensor_pose = f.sensor_pose;
-  g.sensors = f.sensors;
+  Frame g = f.sameTimeAndPoses();
   for (const auto& obs : f.observations) {
     const auto* scan = dynamic_cast<const CObservation2DRangeScan*>(obs.get());
     g.observations.push_back(scan ? thinnedScan(*scan, step, offset) : obs);

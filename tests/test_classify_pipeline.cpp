@@ -208,24 +208,12 @@ TEST_CASE("beam_steps: legs learnt again from thinned scans stand in for legs fa
                             "--save-samples", csv, "-q"});
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
-    std::ifstream in(csv);
-    std::string line;
-    std::getline(in, line);
-    std::vector<std::string> head;
-    std::stringstream hs(line);
-    for (std::string c; std::getline(hs, c, ',');) head.push_back(c);
-    const auto col = [&](const std::string& n) {
-      return std::size_t(std::find(head.begin(), head.end(), n) - head.begin());
-    };
-    const std::size_t label = col("label"), distance = col("distance");
-    REQUIRE(distance < head.size());
+    const auto cols = readCsv(csv);
+    REQUIRE(cols.count("label"));
+    REQUIRE(cols.count("distance"));
     std::vector<double> out;
-    while (std::getline(in, line)) {
-      std::vector<std::string> v;
-      std::stringstream ls(line);
-      for (std::string c; std::getline(ls, c, ',');) v.push_back(c);
-      if (v.at(label) == "1") out.push_back(std::stod(v.at(distance)));
-    }
+    for (std::size_t i = 0; i < cols.at("label").size(); ++i)
+      if (cols.at("label")[i] == 1) out.push_back(cols.at("distance")[i]);
     return out;
   };
   const auto recorded = personDistances("1");

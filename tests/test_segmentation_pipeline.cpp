@@ -45,24 +45,6 @@ std::string segment3d(const std::string& scenario, const std::string& tag,
   return ev.output;
 }
 
-// Columns of a CSV file by name.
-std::map<std::string, std::vector<double>> readCsv(const std::string& path) {
-  std::ifstream f(path);
-  std::string line;
-  std::getline(f, line);
-  std::vector<std::string> names;
-  std::stringstream h(line);
-  for (std::string c; std::getline(h, c, ',');) names.push_back(c);
-  std::map<std::string, std::vector<double>> cols;
-  while (std::getline(f, line)) {
-    std::stringstream s(line);
-    std::string v;
-    for (std::size_t i = 0; i < names.size() && std::getline(s, v, ','); ++i)
-      cols[names[i]].push_back(v.empty() ? NAN : std::stod(v));
-  }
-  return cols;
-}
-
 // Ground returns within 10 m (horizontally) of the sensor over the first frames of a scenario:
 // the data segment_3d.ini's IRLS fits.
 std::size_t nearGround(const std::string& text, int frames) {

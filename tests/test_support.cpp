@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -177,4 +178,22 @@ std::string readFramesUntilError(const std::string& pipeline_text,
   }
   return "";
 }
+
+std::map<std::string, std::vector<double>> readCsv(const std::string& path) {
+  std::ifstream f(path);
+  std::string line;
+  std::getline(f, line);
+  std::vector<std::string> names;
+  std::stringstream h(line);
+  for (std::string c; std::getline(h, c, ',');) names.push_back(c);
+  std::map<std::string, std::vector<double>> cols;
+  while (std::getline(f, line)) {
+    std::stringstream s(line);
+    std::string v;
+    for (std::size_t i = 0; i < names.size() && std::getline(s, v, ','); ++i)
+      cols[names[i]].push_back(v.empty() ? NAN : std::stod(v));
+  }
+  return cols;
+}
+
 }  // namespace pedtrack::test

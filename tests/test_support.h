@@ -4,6 +4,7 @@
 #include "pedtrack/plugin_registry.h"
 // Helpers shared by the test files: paths, running the host binary, temporary directories.
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,8 @@ std::string mrptDataset(const std::string& name);
 std::string readFile(const std::string& path);
 void writeFile(const std::string& path, const std::string& text);
 std::vector<std::string> lines(const std::string& text);
+/// The columns of a CSV file with a header line, by name (an empty field: NaN).
+std::map<std::string, std::vector<double>> readCsv(const std::string& path);
 /// A number field of run.json (flat, written by writeRunJson).
 /// The first `"key": <number>` of a JSON text, skipping keys whose value is not a number.
 double jsonValue(const std::string& json, const std::string& key);

@@ -20,6 +20,18 @@ bool isRangeObservation(const mrpt::obs::CObservation& obs) {
          IS_CLASS(obs, CObservation3DRangeScan);
 }
 
+Frame Frame::sameTimeAndPoses() const {
+  Frame g;
+  g.index = index;
+  g.t = t;
+  g.robot_pose = robot_pose;
+  g.has_odometry = has_odometry;
+  g.motion_unknown = motion_unknown;
+  g.sensor_pose = sensor_pose;
+  g.sensors = sensors;
+  return g;
+}
+
 const mrpt::maps::CSimplePointsMap& Frame::cloud() const {
   if (cloud_) return *cloud_;
   auto map = std::make_shared<mrpt::maps::CSimplePointsMap>();

@@ -145,6 +145,11 @@ struct Frame {
 
   /// Points of every range observation, in the robot frame, built on first use and cached, so a
   /// pipeline that needs no points (replay, import) never pays for them.
+  /// A frame at this one's index, time and poses (odometry flags and sensors too), with no
+  /// observations and nothing a stage made: for the same scene observed another way (the
+  /// observations resampled or thinned) and run through the stages again.
+  Frame sameTimeAndPoses() const;
+
   const mrpt::maps::CSimplePointsMap& cloud() const;
   /// Which cloud points came from which observation, in cloud order (built with the cloud).
   const std::vector<CloudSpan>& cloudSpans() const;

@@ -264,8 +264,9 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       for (auto& o : objects_) {
         if (o->det < 0 || o->shunned) continue;
         if (o->person >= 0) {  // only the followed person takes a tentative person's leg
+          if (!followed) continue;
           const Person* owner = personById(o->person);
-          if (!followed || !owner || owner->confirmed) continue;
+          if (!owner || owner->confirmed) continue;
         }
         const double d = (o->pos() - want).norm();
         const bool leg_enough = legLike(*o) || (predicted && o->meanScore() >= p_.moving_leg_score);
