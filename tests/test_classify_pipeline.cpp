@@ -177,21 +177,26 @@ TEST_CASE("real legs: leg_tracker positives 6-7 and the second half of negative_
 TEST_CASE("beam_steps: legs learnt again from thinned scans stand in for legs farther away",
           "[classify][data]") {
   const std::string dir = freshDir("classify_beam_steps");
-  auto dataset = [&](const std::string& steps, const std::string& file) {
+  // root: the folder holding leg_tracker/ as the dataset file writes it.
+  auto dataset = [&](const std::string& steps, const std::string& file,
+                     const std::string& root = "${PEDTRACK_DATA}") {
     std::ofstream(dir + "/" + file) << "[dataset]\npipeline = " << kConfigs
                                     << "detect_legs.ini\nframe_step = 5\nbeam_steps = " << steps
-                                    << "\n[recording.pos6]\nkind = positive\nfile = "
-                                       "${PEDTRACK_DATA}/leg_tracker/positive_6_extracted.bag\n"
+                                    << "\n[recording.pos6]\nkind = positive\nfile = " << root
+                                    << "/leg_tracker/positive_6_extracted.bag\n"
                                        "topic = /training_scan\n"
                                        "labels_topic = /leg_cluster_positions\n"
                                        "[recording.neg]\nkind = negative\nfile = "
-                                       "${PEDTRACK_DATA}/leg_tracker/negative_2.bag\n"
+                                    << root
+                                    << "/leg_tracker/negative_2.bag\n"
                                        "topic = /left_scan\npart = 0 0.05\n";
     return dir + "/" + file;
   };
-  // A step that is no whole number is one line naming the key, before any input is read.
+  // A step that is no whole number is one line naming the key, before any input is read (so
+  // the recordings need not exist, and PEDTRACK_DATA need not be set).
   const auto bad =
-      runHost({"train", "svm", dataset("1 2.5", "bad.ini"), "--out", dir + "/bad.yml", "-q"});
+      runHost({"train", "svm", dataset("1 2.5", "bad.ini", dir), "--out", dir + "/bad.yml", "-q"});
+  INFO(bad.output);
   CHECK(bad.exit_code == 2);
   CHECK(bad.output.find("[dataset] beam_steps: 2.5 is no whole step") != std::string::npos);
 #ifndef PEDTRACK_WITH_ROSBAG
