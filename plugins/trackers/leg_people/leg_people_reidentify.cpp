@@ -105,6 +105,7 @@ LegPeopleTracker::Object* LegPeopleTracker::reidentifyByOneLeg(
       best->pos() + q.est.stepWidth() * Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
   q.est = LegPoseEstimator(p_.pose);
   q.est.start(t, best->pos(), hidden, yaw);
+  q.since = t;
   q.centres.clear();  // the way from where they were lost is no walk seen
   q.backwards = 0;
   (q.est.left() == best->pos() ? q.left : q.right) = best->id;

@@ -78,6 +78,7 @@ struct LegPeopleTracker::Person {
   Eigen::Vector2d seen_at = Eigen::Vector2d::Zero(), seen_v = Eigen::Vector2d::Zero();
   double travelled = 0, last_seen = 0, backwards = 0, last_step = 0;
   double tracked = 0;  // s seen while confirmed (coastLimit)
+  double since = 0;    // when the pose last (re)started: the person formed or re-identified
   double hidden = 0;   // s unseen while something nearer the scanner hid their place
   // s not seen by both legs, unexplained by anything nearer, since both were last seen
   // (max_one_leg; see updatePeople), and the unexplained time of the current gap in sightings

@@ -226,6 +226,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     if (!findObject(objects_, person->left)) person->left = -1;
     if (!findObject(objects_, person->right)) person->right = -1;
   }
+  const auto claims = nearestClaims(t, is_static);
   for (auto& person : people_) {
     Person& P = *person;
     Object* lo = findObject(objects_, P.left);
@@ -249,31 +250,14 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
       if (slot >= 0 && !(followed && held && held->det < 0)) continue;
       const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();
       Object* best = nullptr;
-      // A confirmed person's gait predicts where their leg is: an object found there needs only
-      // the score a walking object needs (far legs have few points and score low). Not once
-      // they are lost long: a chair there would hold the track for good (confirmed people are
-      // never deleted on the static scene, and keep the grid from learning it).
+      // A confirmed person's gait predicts where their leg is (mayAdopt).
       const bool predicted = P.confirmed && (l.seen || r.seen || !lostLong(P, t));
-      // Behind an occlusion a confirmed person's prediction grows uncertain: the gate widens
-      // with the time unseen (a tentative person must still prove itself on its own legs).
-      double bd = p_.pose.leg_gate;
-      // Not where the robot's motion is unknown: the gait's prediction is then made in a frame
-      // that moves by an unknown amount, and clutter streams past it.
-      if (P.confirmed && motion_known_)
-        bd += std::min(p_.reacquire_spread * (t - P.last_seen), p_.reacquire_max);
+      double bd = adoptGate(P, t);
       for (auto& o : objects_) {
-        if (o->det < 0 || o->shunned) continue;
-        if (o->person >= 0) {  // only the followed person takes a tentative person's leg
-          if (!followed) continue;
-          const Person* owner = personById(o->person);
-          if (!owner || owner->confirmed) continue;
-        }
         const double d = (o->pos() - want).norm();
-        const bool leg_enough = legLike(*o) || (predicted && o->meanScore() >= p_.moving_leg_score);
-        if (d >= bd || !leg_enough) continue;
-        // A door jamb or table leg next to a passing person must not become their leg: once
-        // adopted it would hold the track on the furniture after the person left.
-        if (is_static && is_static(o->pos().x(), o->pos().y())) continue;
+        if (d >= bd || !mayAdopt(*o, predicted, followed, is_static)) continue;
+        // A confirmed person's missing leg is predicted nearer it (nearestClaims).
+        if (auto c = claims.find(o->id); c != claims.end() && c->second < d - 1e-9) continue;
         bd = d, best = o.get();
       }
       if (!best) continue;
@@ -433,7 +417,9 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
   // Two people closer than merge_distance are one: bodies do not interpenetrate. It is a person
   // split in two (each leg seen twice by scanners merged out of step) or a lost track that
   // coasted beside its person's new one. The tentative one goes, else the one seen less
-  // recently, else the newer.
+  // recently, else the one whose legs were found last (formed or re-identified later: the less
+  // sure of whom it follows; a person re-identified onto a passer-by's legs had taken the
+  // passer-by's id away: ID switches in the crowds -2 to -6 %), else the newer.
   if (p_.merge_distance > 0)
     for (auto& a : people_)
       for (auto& b : people_) {
@@ -447,6 +433,7 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
           continue;
         Person* drop = a->confirmed != b->confirmed   ? (a->confirmed ? b : a).get()
                        : a->last_seen != b->last_seen ? (a->last_seen < b->last_seen ? a : b).get()
+                       : a->since != b->since         ? (a->since > b->since ? a : b).get()
                                                       : (a->id > b->id ? a : b).get();
         drop->last_seen = -INFINITY;
       }
@@ -519,6 +506,7 @@ void LegPeopleTracker::formPeople(double t, const std::vector<LegDetection>& leg
       person->score_n = 2;
     }
     person->est.start(t, a->pos(), b->pos(), yaw);
+    person->since = t;
     const bool a_left = person->est.left() == a->pos();
     person->left = a_left ? a->id : b->id;
     person->right = a_left ? b->id : a->id;

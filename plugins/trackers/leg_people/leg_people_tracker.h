@@ -21,6 +21,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "pedtrack/frame.h"
@@ -337,6 +338,11 @@ class LegPeopleTracker {
                                         const std::function<bool(double, double)>& is_static,
                                         const std::vector<LegReturn>& returns,
                                         Eigen::Vector2d& sensor) const;
+  double adoptGate(const Person& P, double t) const;
+  bool mayAdopt(const Object& o, bool predicted, bool followed,
+                const std::function<bool(double, double)>& is_static) const;
+  std::unordered_map<long, double> nearestClaims(
+      double t, const std::function<bool(double, double)>& is_static) const;
   double reidentifyRadius(const Person& q, double t) const;
   int legsSeen(const Person& q) const;
   double lostDistance(const Person& q, double t, const Eigen::Vector2d& p) const;
