@@ -1,6 +1,9 @@
 // Adoption of a free leg-like object by a person's missing leg (leg_people): which objects a
 // person may take there, within which gate, and the nearest claim on each object.
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <unordered_map>
 
 #include "leg_people/leg_people_state.h"
 
@@ -18,11 +21,11 @@ double LegPeopleTracker::adoptGate(const Person& P, double t) const {
   return gate;
 }
 
-// Whether P's missing leg may take o (its distance aside). `predicted`: P's gait still predicts
-// where the leg is (a confirmed person seen this scan or not lost long), so an object there needs
-// only the score a walking object needs (far legs have few points and score low); not once they
-// are lost long: a chair there would hold the track for good (confirmed people are never deleted
-// on the static scene, and keep the grid from learning it). `followed`: see followed_.
+// Whether P's missing leg may take o, apart from how far it is. `predicted`: P's gait still
+// predicts where the leg is (a confirmed person seen this scan or not lost long), so an object
+// there needs only the score a walking object needs (far legs have few points and score low); not
+// once they are lost long: a chair there would hold the track for good (confirmed people are never
+// deleted on the static scene, and keep the grid from learning it). `followed`: see followed_.
 bool LegPeopleTracker::mayAdopt(const Object& o, bool predicted, bool followed,
                                 const std::function<bool(double, double)>& is_static) const {
   if (o.det < 0 || o.shunned) return false;
