@@ -351,8 +351,10 @@ void collectRecording(const Dataset& d, const DatasetInput& in, const PluginRegi
     throw ConfigError(in.file + ": labels_topic needs ROS bag support (PEDTRACK_WITH_ROSBAG)");
 #endif
   }
-  // Labels a segmented frame's clusters and adds them (step: its beams were thinned by this).
+  // Labels a segmented frame's clusters and adds them (step: its beams were thinned by this;
+  // each frame's labels are counted at the first step listed, not once per step).
   auto learnFrom = [&](const Frame& f, int step) {
+    const bool counts = step == d.steps.front();
     if (in.kind == DatasetInput::Kind::Negative) {
       addClusters(
           d, f, out, st, [](std::size_t) { return int(Label::NonPerson); }, step);
@@ -379,7 +381,7 @@ void collectRecording(const Dataset& d, const DatasetInput& in, const PluginRegi
       if (it != labels.end() && it->t <= f.t + 1e-4) {
         // Greedy nearest pairs, each cluster marked by at most one label.
         for (const auto& o : it->objects) {
-          if (step == 1) ++st.labels;  // each label counted once, not once per step
+          if (counts) ++st.labels;
           int best = -1;
           double best_d = d.match_distance;
           for (std::size_t c = 0; c < at_sensor.size(); ++c) {
@@ -388,7 +390,7 @@ void collectRecording(const Dataset& d, const DatasetInput& in, const PluginRegi
           }
           if (best < 0) continue;
           label[std::size_t(best)] = int(Label::Person);
-          if (step == 1) ++st.labels_matched;
+          if (counts) ++st.labels_matched;
         }
       }
     }

@@ -162,9 +162,7 @@ TEST_CASE("real legs: leg_tracker positives 6-7 and the second half of negative_
   WARN("built without ROS bag support: real legs not scored");
   return;
 #endif
-  const std::string data = sharedDataDir();
-  requireData(data.empty() ? "" : data + "/leg_tracker/negative_2.bag");
-  setenv("PEDTRACK_DATA", data.c_str(), 1);
+  requiredDataFileExported("leg_tracker/negative_2.bag");
   for (const char* m : {"legs_knn.yml", "legs_svm.yml"}) {
     const std::string out =
         evalModel(kModels + m, {"--dataset", kConfigs + "training/legs_test.ini"});
@@ -203,9 +201,7 @@ TEST_CASE("beam_steps: legs learnt again from thinned scans stand in for legs fa
   WARN("built without ROS bag support: beam_steps not run on a recording");
   return;
 #endif
-  const std::string data = sharedDataDir();
-  requireData(data.empty() ? "" : data + "/leg_tracker/positive_6_extracted.bag");
-  setenv("PEDTRACK_DATA", data.c_str(), 1);
+  requiredDataFileExported("leg_tracker/positive_6_extracted.bag");
   // The persons' distance feature, as saved with the samples.
   auto personDistances = [&](const std::string& steps) {
     const std::string csv = dir + "/samples_" + std::to_string(steps.size()) + ".csv";

@@ -141,6 +141,12 @@ std::string requiredDataFile(const std::string& relative) {
   requireData(path);
   return path;
 }
+
+std::string requiredDataFileExported(const std::string& relative) {
+  const std::string path = requiredDataFile(relative);
+  setenv("PEDTRACK_DATA", sharedDataDir().c_str(), 1);
+  return path;
+}
 }  // namespace pedtrack::test
 
 namespace pedtrack::test {

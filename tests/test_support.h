@@ -63,6 +63,9 @@ void requireData(const std::string& path);
 /// The shared data file at `relative` (under ../shared/data or $PEDTRACK_DATA), or the process
 /// ends as skipped when it is absent (requireData).
 std::string requiredDataFile(const std::string& relative);
+/// requiredDataFile, with PEDTRACK_DATA set to the shared data folder for what names
+/// ${PEDTRACK_DATA}/... (the training datasets in configs/training/).
+std::string requiredDataFileExported(const std::string& relative);
 }  // namespace pedtrack::test
 
 namespace pedtrack::test {

@@ -21,6 +21,18 @@ double LegPeopleTracker::adoptGate(const Person& P, double t) const {
   return gate;
 }
 
+// Where the robot's motion is unknown, the followed person has the first claim on legs where their
+// gait predicts them (followed_).
+bool LegPeopleTracker::takesFollowedClaim(const Person& P) const {
+  return P.confirmed && P.id == followed_ && !motion_known_;
+}
+
+// Whether a person's leg slot (an object id, -1 none; `held` that object) takes a free object this
+// scan: it holds none, or it is the followed person's (takesFollowedClaim) and went unseen.
+bool LegPeopleTracker::wantsLeg(long slot, const Object* held, bool followed) {
+  return slot < 0 || (followed && held && held->det < 0);
+}
+
 // Whether P's missing leg may take o, apart from how far it is. `predicted`: P's gait still
 // predicts where the leg is (a confirmed person seen this scan or not lost long), so an object
 // there needs only the score a walking object needs (far legs have few points and score low); not
@@ -31,9 +43,7 @@ bool LegPeopleTracker::mayAdopt(const Object& o, bool predicted, bool followed,
   if (o.det < 0 || o.shunned) return false;
   if (o.person >= 0) {  // only the followed person takes a tentative person's leg
     if (!followed) return false;
-    const Person* owner = nullptr;
-    for (const auto& q : people_)
-      if (q->id == o.person) owner = q.get();
+    const Person* owner = personById(o.person);
     if (!owner || owner->confirmed) return false;
   }
   if (!legLike(o) && !(predicted && o.meanScore() >= p_.moving_leg_score)) return false;
@@ -59,13 +69,11 @@ std::unordered_map<long, double> LegPeopleTracker::nearestClaims(
     const Object* lo = findObject(objects_, P.left);
     const Object* ro = findObject(objects_, P.right);
     const bool l_seen = lo && lo->det >= 0, r_seen = ro && ro->det >= 0;
-    const bool followed = P.confirmed && P.id == followed_ && !motion_known_;
-    const bool predicted = P.confirmed && (l_seen || r_seen || !lostLong(P, t));
+    const bool followed = takesFollowedClaim(P);
+    const bool predicted = l_seen || r_seen || !lostLong(P, t);  // P is confirmed
     const double gate = adoptGate(P, t);
     for (int side = 0; side < 2; ++side) {
-      const long slot = side == 0 ? P.left : P.right;
-      const Object* held = side == 0 ? lo : ro;
-      if (slot >= 0 && !(followed && held && held->det < 0)) continue;
+      if (!wantsLeg(side == 0 ? P.left : P.right, side == 0 ? lo : ro, followed)) continue;
       const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();
       for (const auto& o : objects_) {
         const double d = (o->pos() - want).norm();

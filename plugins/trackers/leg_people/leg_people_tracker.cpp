@@ -150,7 +150,7 @@ void LegPeopleTracker::associate(double t, const std::vector<LegDetection>& legs
   }
 }
 
-LegPeopleTracker::Person* LegPeopleTracker::personById(long id) {
+LegPeopleTracker::Person* LegPeopleTracker::personById(long id) const {
   for (auto& q : people_)
     if (q->id == id) return q.get();
   return nullptr;
@@ -243,11 +243,11 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     // Where the robot's motion is unknown, the followed person's leg object unseen this scan is
     // replaced, like a missing one, by a seen object where the gait predicts that leg, and a
     // tentative person's leg there becomes theirs (see followed_).
-    const bool followed = P.confirmed && P.id == followed_ && !motion_known_;
+    const bool followed = takesFollowedClaim(P);
     for (int side = 0; side < 2; ++side) {
       long& slot = side == 0 ? P.left : P.right;
       Object* held = side == 0 ? lo : ro;
-      if (slot >= 0 && !(followed && held && held->det < 0)) continue;
+      if (!wantsLeg(slot, held, followed)) continue;
       const Eigen::Vector2d want = side == 0 ? P.est.predictedLeft() : P.est.predictedRight();
       Object* best = nullptr;
       // A confirmed person's gait predicts where their leg is (mayAdopt).

@@ -320,7 +320,7 @@ class LegPeopleTracker {
   /// hidden behind something nearer only up to max_coast_occluded).
   bool expired(const Person& q, double t) const;
   bool lostLong(const Person& q, double t) const;
-  Person* personById(long id);
+  Person* personById(long id) const;
   /// q seen at c: the reported heading (report_heading_speed), then c recorded.
   void recordCentre(Person& q, double t, const Eigen::Vector2d& c) const;
   /// The scan q is lost: they coast at their recent mean velocity when that is slower
@@ -339,6 +339,8 @@ class LegPeopleTracker {
                                         const std::vector<LegReturn>& returns,
                                         Eigen::Vector2d& sensor) const;
   double adoptGate(const Person& P, double t) const;
+  bool takesFollowedClaim(const Person& P) const;
+  static bool wantsLeg(long slot, const Object* held, bool followed);
   bool mayAdopt(const Object& o, bool predicted, bool followed,
                 const std::function<bool(double, double)>& is_static) const;
   std::unordered_map<long, double> nearestClaims(
