@@ -28,7 +28,7 @@ struct KittiArgs {
   bool json = false;
 };
 
-std::string quoted(const std::string& s) {
+std::string jsonQuoted(const std::string& s) {
   return "\"" + jsonEscape(s) + "\"";
 }
 
@@ -97,21 +97,21 @@ std::string text(const std::vector<KittiFrameMatch>& frames, const KittiArgs& a)
 std::string json(const std::vector<KittiFrameMatch>& frames, const KittiArgs& a) {
   const Totals t = totals(frames);
   std::ostringstream o;
-  o << "{\"kitti\": " << quoted(a.dir) << ",\"detections\": " << quoted(a.detections)
+  o << "{\"kitti\": " << jsonQuoted(a.dir) << ",\"detections\": " << jsonQuoted(a.detections)
     << ",\"min_score\": " << a.min_score << ",\"margin_m\": " << a.margin
     << ",\"people\": " << t.people << ",\"found\": " << t.found
     << ",\"called_in_view\": " << t.called_in_view << ",\"on_people\": " << t.on_people
     << ",\"on_nothing\": " << t.on_nothing << ",\"on_type\": {";
   bool first = true;
   for (const auto& [type, n] : t.on_type)
-    o << (first ? "" : ",") << quoted(type) << ":" << n, first = false;
+    o << (first ? "" : ",") << jsonQuoted(type) << ":" << n, first = false;
   o << "},\"frames\": [";
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const auto& m = frames[f];
     o << (f ? "," : "") << "{\"frame\": " << m.frame << ",\"objects\": [";
     for (std::size_t i = 0; i < m.objects.size(); ++i) {
       const auto& b = m.objects[i];
-      o << (i ? "," : "") << "{\"type\": " << quoted(b.type) << ",\"x\": " << b.x
+      o << (i ? "," : "") << "{\"type\": " << jsonQuoted(b.type) << ",\"x\": " << b.x
         << ",\"y\": " << b.y << ",\"found_by\": "
         << (m.detected_by[i] >= 0 ? m.called[std::size_t(m.detected_by[i])].cluster : -1) << "}";
     }
@@ -121,7 +121,7 @@ std::string json(const std::vector<KittiFrameMatch>& frames, const KittiArgs& a)
       o << (c ? "," : "") << "{\"cluster\": " << k.cluster << ",\"x\": " << k.x << ",\"y\": " << k.y
         << ",\"score\": " << k.score << ",\"in_view\": " << (k.in_view ? "true" : "false")
         << ",\"on\": "
-        << (k.object < 0 ? std::string("null") : quoted(m.objects[std::size_t(k.object)].type))
+        << (k.object < 0 ? std::string("null") : jsonQuoted(m.objects[std::size_t(k.object)].type))
         << "}";
     }
     o << "]}";

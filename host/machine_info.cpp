@@ -21,7 +21,7 @@ std::string firstLine(const std::string& command) {
   return out;
 }
 
-std::string quoted(const std::string& s) {
+std::string shellQuoted(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
@@ -50,7 +50,7 @@ MachineInfo machineInfo(const std::string& source_dir, const std::string& build_
   m.compiler = "gcc " __VERSION__;
 #endif
   m.build_type = build_type.empty() ? "(none)" : build_type;
-  const std::string git = "git -C " + quoted(source_dir);
+  const std::string git = "git -C " + shellQuoted(source_dir);
   m.commit = firstLine(git + " rev-parse --short HEAD 2>/dev/null");
   if (m.commit.empty())
     m.commit = "unknown (not a git checkout)";

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/text.h"
 #include "plot.h"
 
 namespace pedtrack::cli {
@@ -19,24 +20,12 @@ namespace {
 using mrpt::format;
 namespace fs = std::filesystem;
 namespace pt = boost::property_tree;
-constexpr int kWidth = 900, kPanelHeight = 400;
+constexpr int kPanelWidth = 900, kPanelHeight = 400;
 
 /// A number of the tree at `path`; NaN when absent or null.
 double number(const pt::ptree& tree, const char* path) {
   const auto v = tree.get_optional<double>(path);
   return v ? *v : std::nan("");
-}
-
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (!item.empty() && item.back() == '\r') item.pop_back();
-    out.push_back(item);
-  }
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
 }
 
 double parseNumber(const std::string& s) {
@@ -53,7 +42,7 @@ std::map<long, CompareCurve> readCurves(const std::string& path) {
   if (!in) return curves;
   std::string line;
   if (!std::getline(in, line)) return curves;
-  const std::vector<std::string> header = splitCsv(line);
+  const std::vector<std::string> header = splitFields(line);
   auto column = [&](const char* name, bool required) {
     const auto it = std::find(header.begin(), header.end(), name);
     if (it == header.end() && required)
@@ -66,7 +55,7 @@ std::map<long, CompareCurve> readCurves(const std::string& path) {
   while (std::getline(in, line)) {
     ++line_no;
     if (line.empty() || line == "\r") continue;
-    const std::vector<std::string> f = splitCsv(line);
+    const std::vector<std::string> f = splitFields(line);
     if (f.size() != header.size())
       throw ConfigError(format("%s:%ld: expected %zu columns, found %zu", path.c_str(), line_no,
                                header.size(), f.size()));
@@ -185,9 +174,10 @@ std::vector<std::string> drawCompareErrors(const std::string& dir,
       all_h.insert(all_h.end(), series[i].h.begin(), series[i].h.end());
     }
     const plot::Axis x = plot::fitAxis("time (s)", all_t);
-    plot::Plot top(kWidth, kPanelHeight, x, plot::fitAxis("distance error (m)", all_d, false, true),
+    plot::Plot top(kPanelWidth, kPanelHeight, x,
+                   plot::fitAxis("distance error (m)", all_d, false, true),
                    format("truth %ld: distance error per frame (RMSE over the runs)", id));
-    plot::Plot bottom(kWidth, kPanelHeight, x,
+    plot::Plot bottom(kPanelWidth, kPanelHeight, x,
                       plot::fitAxis("heading error (rad)", all_h, false, true),
                       format("truth %ld: heading error per frame (RMSE over the runs)", id));
     bool any_heading = false;

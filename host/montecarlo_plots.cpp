@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "pedtrack/errors.h"
+#include "pedtrack/text.h"
 #include "plot.h"
 
 namespace pedtrack::cli {
@@ -101,15 +102,6 @@ void drawHeading(const std::string& path, const std::vector<const FramePoint*>& 
   if (!p.write(path)) throw DataError("cannot write '" + path + "'");
 }
 
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(item);
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
-}
-
 double number(const std::string& s) {
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
@@ -168,7 +160,7 @@ bool drawLlrPlot(const std::string& existence_csv, const std::string& png,
   if (!in) return false;
   std::string line;
   if (!std::getline(in, line)) return false;
-  const std::vector<std::string> header = splitCsv(line);
+  const std::vector<std::string> header = splitFields(line);
   auto column = [&](const char* name) {
     const auto it = std::find(header.begin(), header.end(), name);
     if (it == header.end())
@@ -185,7 +177,7 @@ bool drawLlrPlot(const std::string& existence_csv, const std::string& png,
   std::vector<double> all_t, all_llr;
   double confirm = NAN, del = NAN, t0 = NAN;
   while (std::getline(in, line)) {
-    const auto f = splitCsv(line);
+    const auto f = splitFields(line);
     if (f.size() < header.size()) continue;
     const double t = number(f[ct]), llr = number(f[cllr]);
     if (!std::isfinite(t0)) t0 = t;

@@ -14,11 +14,6 @@ double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Ve
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-double wrapHalfPi(double a) {  // (−π/2, π/2]
-  a = std::remainder(a, M_PI);
-  return a <= -M_PI / 2 ? a + M_PI : a;
-}
-
 // The rectangle with sides along (cos a, sin a) and its normal spanning the points' extents.
 OrientedBox extentsBox(const Points2& pts, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -41,6 +36,11 @@ OrientedBox extentsBox(const Points2& pts, double angle) {
 }
 
 }  // namespace
+
+double wrapHalfPi(double a) {
+  a = std::remainder(a, M_PI);
+  return a <= -M_PI / 2 ? a + M_PI : a;
+}
 
 Points2 convexHull(const Points2& pts) {
   Points2 p = pts;

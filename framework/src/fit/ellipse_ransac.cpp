@@ -32,6 +32,8 @@
 #include <limits>
 #include <numeric>
 
+#include "pedtrack/fit/boxes.h"  // wrapHalfPi
+
 namespace pedtrack::fit {
 namespace {
 
@@ -42,11 +44,6 @@ enum : int { kX = 0, kY = 1, kTheta = 2, kAlpha = 3, kBeta = 4 };
 double wrapPi(double a) {  // (−π, π]
   a = std::remainder(a, 2 * M_PI);
   return a <= -M_PI ? a + 2 * M_PI : a;
-}
-
-double wrapHalfPi(double a) {  // (−π/2, π/2]
-  a = std::remainder(a, M_PI);
-  return a <= -M_PI / 2 ? a + M_PI : a;
 }
 
 // A feasible set exists and every s is defined: β > 0 and some α ≥ β in the boxes.

@@ -14,10 +14,6 @@ namespace {
 constexpr double kTau = 0.5, kA = 4.0, kB = 0.3, kLambda = 0.35;
 constexpr double kRobotRadius = 0.4, kGoalReached = 0.5;
 
-double wrap(double a) {
-  return mrpt::math::wrapToPi(a);
-}
-
 struct State {
   double x, y, vx = 0, vy = 0, yaw;
   double gx = 0, gy = 0;  // goal
@@ -105,7 +101,8 @@ std::vector<Trajectory> simulateCrowd(const std::vector<CrowdAgent>& agents,
       // The body faces where it walks, turning at a bounded rate; standing, it keeps its facing.
       if (std::hypot(s.vx, s.vy) > 0.15) {
         const double step = area.facing_rate * dt;
-        s.yaw = wrap(s.yaw + std::clamp(wrap(std::atan2(s.vy, s.vx) - s.yaw), -step, step));
+        s.yaw = mrpt::math::wrapToPi(
+            s.yaw + std::clamp(mrpt::math::wrapToPi(std::atan2(s.vy, s.vx) - s.yaw), -step, step));
       }
     }
   }

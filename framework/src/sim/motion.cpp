@@ -22,9 +22,6 @@ constexpr double kMaxAngle = 3600;           // deg
 constexpr double kMaxDuration = 36000;       // s
 constexpr std::size_t kMaxPathPoints = 5e6;  // 100 km
 
-double wrap(double a) {
-  return mrpt::math::wrapToPi(a);
-}
 double deg(double d) {
   return mrpt::DEG2RAD(d);
 }
@@ -82,7 +79,8 @@ struct Builder {
   void gotoPoint(double tx, double ty) {
     const double dist = std::hypot(tx - x, ty - y);
     if (dist < 1e-6) return;
-    yaw = yaw + wrap(std::atan2(ty - y, tx - x) - yaw);  // facing smoothing does the turning
+    yaw = yaw + mrpt::math::wrapToPi(std::atan2(ty - y, tx - x) -
+                                     yaw);  // facing smoothing does the turning
     translate(dist, 0);
   }
   void stand(double new_yaw, double duration) {
@@ -171,7 +169,7 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
       b.stand(b.yaw + deg(args[0]), std::abs(deg(args[0])) / lim.turn_rate);
     } else if (cmd == "face") {
       need(1);
-      const double target = b.yaw + wrap(deg(args[0]) - b.yaw);
+      const double target = b.yaw + mrpt::math::wrapToPi(deg(args[0]) - b.yaw);
       b.stand(target, std::abs(target - b.yaw) / lim.turn_rate);
     } else if (cmd == "arc") {
       need(2);
@@ -225,7 +223,7 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
       if (px.size() > 1 && p.px.size() > 1) {
         const double a0 = std::atan2(py.back() - py[py.size() - 2], px.back() - px[px.size() - 2]);
         const double a1 = std::atan2(p.py[1] - p.py[0], p.px[1] - p.px[0]);
-        const double slow = std::max(0.1, 0.5 * (1 + std::cos(wrap(a1 - a0))));
+        const double slow = std::max(0.1, 0.5 * (1 + std::cos(mrpt::math::wrapToPi(a1 - a0))));
         caps.back() = std::min(caps.back(), slow * std::min(caps.back(), p.speed));
       }
       for (std::size_t k = 1; k < p.px.size(); ++k) {
@@ -278,14 +276,14 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
       const double follow =
           r1.smooth ? std::abs(r1.facing - r0.facing) * kDt / std::max(r1.t - r0.t, kDt) : 0.0;
       const double step = lim.facing_rate * kDt + follow;
-      facing += std::clamp(wrap(target - facing), -step, step);
+      facing += std::clamp(mrpt::math::wrapToPi(target - facing), -step, step);
     } else {
       s.x = raw.back().x;
       s.y = raw.back().y;
-      facing += std::clamp(wrap(raw.back().facing - facing), -lim.facing_rate * kDt,
+      facing += std::clamp(mrpt::math::wrapToPi(raw.back().facing - facing), -lim.facing_rate * kDt,
                            lim.facing_rate * kDt);
     }
-    s.yaw = wrap(facing);
+    s.yaw = mrpt::math::wrapToPi(facing);
     tr.samples_.push_back(s);
   }
   // Velocities by central differences (what a perfect observer of the path would report).
@@ -296,7 +294,7 @@ Trajectory Trajectory::fromScript(const std::string& script, double x, double y,
     if (dt <= 0) continue;
     S[k].vx = (S[c].x - S[a].x) / dt;
     S[k].vy = (S[c].y - S[a].y) / dt;
-    S[k].omega = wrap(S[c].yaw - S[a].yaw) / dt;
+    S[k].omega = mrpt::math::wrapToPi(S[c].yaw - S[a].yaw) / dt;
   }
   return tr;
 }
@@ -307,7 +305,7 @@ Trajectory Trajectory::fromSamples(std::vector<MotionSample> samples) {
   auto& S = tr.samples_;
   for (std::size_t k = 0; k < S.size(); ++k) {
     const std::size_t a = k ? k - 1 : k, c = k + 1 < S.size() ? k + 1 : k;
-    if (S[c].t > S[a].t) S[k].omega = wrap(S[c].yaw - S[a].yaw) / (S[c].t - S[a].t);
+    if (S[c].t > S[a].t) S[k].omega = mrpt::math::wrapToPi(S[c].yaw - S[a].yaw) / (S[c].t - S[a].t);
   }
   return tr;
 }
@@ -332,7 +330,7 @@ MotionSample Trajectory::at(double t) const {
   s.t = t;
   s.x = a.x + u * (b.x - a.x);
   s.y = a.y + u * (b.y - a.y);
-  s.yaw = a.yaw + u * wrap(b.yaw - a.yaw);
+  s.yaw = a.yaw + u * mrpt::math::wrapToPi(b.yaw - a.yaw);
   s.vx = a.vx + u * (b.vx - a.vx);
   s.vy = a.vy + u * (b.vy - a.vy);
   s.omega = a.omega + u * (b.omega - a.omega);

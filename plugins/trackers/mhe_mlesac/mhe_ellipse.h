@@ -16,6 +16,8 @@
 namespace pedtrack::track::mhe {
 
 constexpr int kStates = 8;  ///< [x, y, θ, vx, vy, ω, α, β]
+/// The states eq. 3's ellipse deviation s depends on: x, y, θ, α, β.
+constexpr int kShapeStates[5] = {0, 1, 2, 6, 7};
 using State = Eigen::Matrix<double, 8, 1>;
 using Point = Eigen::Vector2d;
 

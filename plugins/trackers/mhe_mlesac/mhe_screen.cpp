@@ -6,7 +6,6 @@
 namespace pedtrack::track::mhe {
 namespace {
 
-constexpr int kShape[5] = {0, 1, 2, 6, 7};
 constexpr double kPenalty = 1e6;  // weight of a squared bound violation (rad², m²)
 
 }  // namespace
@@ -26,7 +25,7 @@ MheScreen::MheScreen(const MheProblem& pb, const MheParams& params)
   }
   for (int k = 0; k < h_; ++k) {
     Eigen::Matrix<double, 5, Eigen::Dynamic> m(5, n_);
-    for (int r = 0; r < 5; ++r) m.row(r) = map_[k].row(kShape[r]);
+    for (int r = 0; r < 5; ++r) m.row(r) = map_[k].row(kShapeStates[r]);
     shape_map_.push_back(std::move(m));
   }
   base_hessian_ = Eigen::MatrixXd::Zero(n_, n_);
@@ -105,7 +104,7 @@ std::vector<State> MheScreen::minimise(const MheProblem& pb, int iterations,
       const double lo[3] = {theta_lo_[k], p_.alpha_min, p_.beta_min};
       const double hi[3] = {theta_hi_[k], p_.alpha_max, p_.beta_max};
       for (int j = 0; j < 3; ++j) {
-        const double v = xs[k](kShape[2 + j]);
+        const double v = xs[k](kShapeStates[2 + j]);
         const double e = v < lo[j] ? v - lo[j] : v > hi[j] ? v - hi[j] : 0;
         if (e == 0) continue;
         A(2 + j, 2 + j) += 2 * kPenalty;

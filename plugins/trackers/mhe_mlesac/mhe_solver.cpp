@@ -16,7 +16,6 @@ using Ipopt::Index;
 using Ipopt::Number;
 
 constexpr double kInf = 1e19;                        // Ipopt's "no bound" (nlp_upper_bound_inf)
-constexpr int kShape[5] = {0, 1, 2, 6, 7};           // the states the ellipse deviation depends on
 constexpr int kBlock = kStates * (kStates + 1) / 2;  // one state's lower-triangular Hessian
 
 // One Ipopt problem holds a batch of B independent MHE-Ellipse problems over the same horizon
@@ -227,7 +226,8 @@ class MheTnlp : public Ipopt::TNLP {
     for (int k = 0; k < h_; ++k)
       for (int i : pb.sample[k]) {
         const double s = deviation(xs[k], (*pb.frames)[k].points[i], g, nullptr);
-        for (int j = 0; j < 5; ++j) grad[kStates * k + kShape[j]] += 2 * pb.data_weight * s * g(j);
+        for (int j = 0; j < 5; ++j)
+          grad[kStates * k + kShapeStates[j]] += 2 * pb.data_weight * s * g(j);
       }
   }
 
@@ -260,7 +260,7 @@ class MheTnlp : public Ipopt::TNLP {
       }
       sum *= sigma * 2 * pb.data_weight;
       for (int r = 0; r < 5; ++r)
-        for (int c = 0; c <= r; ++c) at(k, kShape[r], kShape[c]) += sum(r, c);
+        for (int c = 0; c <= r; ++c) at(k, kShapeStates[r], kShapeStates[c]) += sum(r, c);
       // Eq. 10: ∇² of (x − oₓ)² + (y − o_y)² is 2 I on (x, y).
       at(k, 0, 0) += 2 * range_lambda[k];
       at(k, 1, 1) += 2 * range_lambda[k];

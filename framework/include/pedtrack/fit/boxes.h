@@ -17,6 +17,8 @@ struct OrientedBox {
 
 /// Convex hull, counter-clockwise, no collinear points (Andrew's monotone chain).
 Points2 convexHull(const Points2& pts);
+/// An axis direction (defined modulo π: a box side, an ellipse's axis) wrapped to (−π/2, π/2].
+double wrapHalfPi(double a);
 
 /// The rectangle of least area enclosing the points (rotating calipers: one side lies on a hull
 /// edge). False for no points; one point or collinear points give a degenerate box (zero side).
