@@ -4,6 +4,7 @@ set -euo pipefail
 packages=(
   cmake g++ make ccache pkg-config clang-format zlib1g-dev
   clang libclang-rt-14-dev python3               # scripts/check.sh: ASan + UBSan build, libFuzzer
+  lld                                          # scripts/check.sh: links both builds faster
   libmrpt-dev mrpt-apps mrpt-common            # MRPT 2.5: observations, config, drivers, rawlog-edit, sample datasets
   libboost-filesystem-dev libboost-program-options-dev
   catch2

@@ -44,9 +44,16 @@ std::string runScenario(const std::string& name, const std::string& scenario,
   return dir;
 }
 
+// Seeds a P3 heading figure is measured over under the sanitizers (scripts/check.sh), where
+// leg_pose runs ~20 times slower: the same code paths on a few seeds there, the figure itself
+// checked over every seed in the Release build (this file is labelled `full_length`).
+constexpr int kSanitizedP3Runs = 4;
+
 // leg_pose_p3.ini over `runs` seeds from `seed_base` of a shipped P3 scenario (`pedtrack
-// montecarlo`); the host must succeed. Returns montecarlo.json.
+// montecarlo`; kSanitizedP3Runs of them under the sanitizers); the host must succeed. Returns
+// montecarlo.json.
 std::string p3MonteCarlo(const std::string& scenario, int runs, int seed_base) {
+  if (kSanitized) runs = kSanitizedP3Runs;
   const std::string dir = freshDir(scenario + "_montecarlo");
   const auto r =
       runHost({"montecarlo", kConfigs + "leg_pose_p3.ini",
@@ -54,7 +61,11 @@ std::string p3MonteCarlo(const std::string& scenario, int runs, int seed_base) {
                "--seed-base", std::to_string(seed_base), "--out", dir, "-q"});
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  return readFile(dir + "/montecarlo.json");
+  const std::string json = readFile(dir + "/montecarlo.json");
+  // A heading that has lost the walker is off by ~90° on average; the few seeds run under the
+  // sanitizers must at least follow them.
+  if (kSanitized) CHECK(jsonNumber(json, "heading_mae_deg") < 45);
+  return json;
 }
 
 }  // namespace
@@ -133,7 +144,7 @@ TEST_CASE("leg_pose keeps P3 scenario 1's walker facing the robot as they back a
   // and heading_backward_per_metre 1, where 16.3° with the motion evidence on hidden-leg scans,
   // 19.3° without heading_hidden_turn_tau, 19.5° with neither (README "Leg-height tracking").
   const std::string j = p3MonteCarlo("p3_s1_straight_turn_back", 40, 100);
-  CHECK(jsonNumber(j, "heading_mae_deg") < 9.5);
+  if (!kSanitized) CHECK(jsonNumber(j, "heading_mae_deg") < 9.5);
   CHECK(jsonNumber(j, "position_mae_m") < 0.05);
 }
 
@@ -146,7 +157,7 @@ TEST_CASE("leg_pose reads P3 scenario 3's side view with the partly hidden leg l
   // heading_hidden_turn_tau 0.2 s and heading_backward_per_metre 1, and there 6.7° with
   // occluded_width = 0.
   const std::string j = p3MonteCarlo("p3_s3_turn_straight", 30, 1);
-  CHECK(jsonNumber(j, "heading_mae_deg") < 5.3);
+  if (!kSanitized) CHECK(jsonNumber(j, "heading_mae_deg") < 5.3);
 }
 
 TEST_CASE("leg_pose reads P3 scenario 2's side steps from their slow start", "[legs][pipeline]") {
@@ -154,7 +165,7 @@ TEST_CASE("leg_pose reads P3 scenario 2's side steps from their slow start", "[l
   // heading_motion_speed (0.15 m/s): a side step starting slowly is not read as a turn. Measured
   // 3.7° (P3's target 5°); 7.6° with heading_motion_speed = 0.3.
   const std::string j = p3MonteCarlo("p3_s2_sidestep_turn", 30, 1);
-  CHECK(jsonNumber(j, "heading_mae_deg") < 5);
+  if (!kSanitized) CHECK(jsonNumber(j, "heading_mae_deg") < 5);
 }
 
 TEST_CASE("leg_pose turns round a walker left facing backward by P3 scenario 4's quick turns",
@@ -164,7 +175,7 @@ TEST_CASE("leg_pose turns round a walker left facing backward by P3 scenario 4's
   // follows turns the estimate round. Measured 12.6°; 14.4° when only the best's own innovation
   // counted (the estimate then stayed facing backward for seconds).
   const std::string j = p3MonteCarlo("p3_s4_random", 100, 200);
-  CHECK(jsonNumber(j, "heading_mae_deg") < 13.5);
+  if (!kSanitized) CHECK(jsonNumber(j, "heading_mae_deg") < 13.5);
 }
 
 #ifdef PEDTRACK_WITH_ROSBAG

@@ -28,13 +28,24 @@ std::string runAndEval(const std::string& name, const std::string& scenario,
   return evalRunJson(dir, eval_extra);
 }
 
+// Frames of a paper scenario run under the sanitizers (scripts/check.sh), where imm_shape runs
+// ~10 times slower: the same code paths on the scenario's start there; the paper's figures are
+// checked on the whole scenario in the Release build (this file is labelled `full_length`).
+const std::string kSanitizedFrames = "30";
+
 }  // namespace
 
 TEST_CASE("P0's C-path: imm_shape beats kf_bb beats kf_circle on position (P0 Table I order)",
           "[shape][pipeline]") {
-  const std::string imm = runAndEval("shape_c_imm", "p0_c_path.ini", "imm_shape");
-  const std::string bb = runAndEval("shape_c_bb", "p0_c_path.ini", "kf_bb");
-  const std::string circle = runAndEval("shape_c_circle", "p0_c_path.ini", "kf_circle");
+  const std::string frames = kSanitized ? kSanitizedFrames : "";
+  const std::string imm = runAndEval("shape_c_imm", "p0_c_path.ini", "imm_shape", {}, frames);
+  const std::string bb = runAndEval("shape_c_bb", "p0_c_path.ini", "kf_bb", {}, frames);
+  const std::string circle = runAndEval("shape_c_circle", "p0_c_path.ini", "kf_circle", {}, frames);
+  if (kSanitized) {  // the walker's start, tracked by each
+    for (const std::string* ev : {&imm, &bb, &circle})
+      CHECK(jsonNumber(*ev, "position_rmse_m") <= 0.2);
+    return;
+  }
   // Measured (seed 1): 27.5 / 65.9 / 123.3 mm; heading RMSE 0.30 / 0.33 rad (P0: 75.8 mm and
   // 0.426 rad for KF-BB, 135.6 mm for KF-circle).
   const double p_imm = jsonNumber(imm, "position_rmse_m");
@@ -53,11 +64,17 @@ TEST_CASE("P0's C-path: imm_shape beats kf_bb beats kf_circle on position (P0 Ta
 
 TEST_CASE("P1's round trip: the COG model gains weight with distance (P1 Table II trend)",
           "[shape][pipeline]") {
-  const std::string ev =
-      runAndEval("shape_p1_trip", "p1_round_trip.ini", "imm_shape",
-                 {"--range-bins", "0,10,20", "--model-names", "ellipse,box,cog"});
+  const std::string ev = runAndEval("shape_p1_trip", "p1_round_trip.ini", "imm_shape",
+                                    {"--range-bins", "0,10,20", "--model-names", "ellipse,box,cog"},
+                                    kSanitized ? kSanitizedFrames : "");
   const std::string bands = ev.substr(ev.find("\"range_bands\""));
   const auto near = bands.find("\"from_m\": 0");
+  if (kSanitized) {  // the walker's start, near the scanner: every model weighed there
+    REQUIRE(near != std::string::npos);
+    CHECK(jsonNumber(bands.substr(near), "ellipse") > 0);
+    CHECK(jsonNumber(bands.substr(near), "cog") > 0);
+    return;
+  }
   const auto mid = bands.find("\"from_m\": 10");
   REQUIRE(near != std::string::npos);
   REQUIRE(mid != std::string::npos);
