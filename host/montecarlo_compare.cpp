@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 
 #include "pedtrack/errors.h"
 #include "pedtrack/text.h"

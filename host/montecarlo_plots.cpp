@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include "pedtrack/errors.h"
 #include "pedtrack/text.h"

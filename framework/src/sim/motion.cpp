@@ -79,8 +79,8 @@ struct Builder {
   void gotoPoint(double tx, double ty) {
     const double dist = std::hypot(tx - x, ty - y);
     if (dist < 1e-6) return;
-    yaw = yaw + mrpt::math::wrapToPi(std::atan2(ty - y, tx - x) -
-                                     yaw);  // facing smoothing does the turning
+    // Facing smoothing does the turning.
+    yaw = yaw + mrpt::math::wrapToPi(std::atan2(ty - y, tx - x) - yaw);
     translate(dist, 0);
   }
   void stand(double new_yaw, double duration) {
