@@ -3,6 +3,8 @@
 // leg or clutter cluster is tracked, leg-like pairs become people, confirmed once they move.
 // A local occupancy grid of the static scene (and an optional prior map) keeps people from
 // starting on walls and furniture. With `follow`, one person is picked and marked "following".
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
 #include <cmath>
 #include <map>
 #include <memory>
@@ -31,6 +33,7 @@ struct LegPeopleStageParams {
   double report_coast = 0.5;    // s unseen before a person is no longer written
   double follow_coast = 2.0;    // s unseen before the followed person is no longer written
   bool static_scene = true;
+  bool out_of_view = true;  // a place no scanner looks at counts as hidden (max_coast_occluded)
   // Cells occupied for a second (not by a confirmed person) are static scene here, not the
   // grid's general 3 s: a new person must walk to be confirmed anyway, and a moving robot sees
   // furniture only for seconds.
@@ -199,6 +202,9 @@ const ParamTable<LegPeopleStageParams>& table() {
                 "is lost for a second when their legs merge or turn edge-on, and does not "
                 "stop existing then")
           .boolean(&P::report_tentative, "report_tentative", "also write tracks not yet confirmed")
+          .boolean(&P::out_of_view, "out_of_view",
+                   "a person's place outside every scanner's aperture or range counts as hidden "
+                   "(max_coast_occluded), as one behind a nearer return does")
           .boolean(&P::static_scene, "static_scene",
                    "no person starts in a cell the local occupancy grid (or the prior map) "
                    "has seen occupied for static_persist seconds")
@@ -241,7 +247,8 @@ class LegPeople : public Tracker {
         static_radius_(p.static_radius),
         report_coast_(p.report_coast),
         follow_coast_(p.follow_coast),
-        support_(p.tracker.support_gate > 0) {
+        support_(p.tracker.support_gate > 0),
+        out_of_view_(p.out_of_view) {
     if (p.static_scene) scene_.emplace(p.scene);
     if (follow_ != "off" && follow_ != "nearest") {
       char* end = nullptr;
@@ -274,6 +281,7 @@ class LegPeople : public Tracker {
     // in the fixed frame, built on first use.
     std::vector<Eigen::Vector2d> points;
     auto occluded = [&](double x, double y, double half_width) {
+      if (out_of_view_ && outOfView(f, {x, y})) return true;
       if (points.empty()) points = keptPoints(f);
       return hiddenBehind(f, {x, y}, half_width, points);
     };
@@ -392,6 +400,26 @@ class LegPeople : public Tracker {
     return false;
   }
 
+  // Whether no 2D scanner of the frame looks at p: outside every scan's aperture or beyond its
+  // maximum range. A person there is unseen for want of a view, not because they left.
+  static bool outOfView(const Frame& f, const Eigen::Vector2d& p) {
+    std::size_t k = 0;
+    bool any = false;
+    for (const auto& o : f.observations) {
+      const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(o.get());
+      if (!scan) continue;
+      any = true;
+      const mrpt::poses::CPose3D& pose = k < f.sensors.size() ? f.sensors[k].pose : f.sensor_pose;
+      ++k;
+      double lx, ly, lz;
+      pose.inverseComposePoint(p.x(), p.y(), pose.z(), lx, ly, lz);
+      if (std::hypot(lx, ly) <= scan->maxRange &&
+          std::abs(std::atan2(ly, lx)) <= 0.5 * scan->aperture + 1e-6)
+        return false;
+    }
+    return any;
+  }
+
   // The scanner nearest to a fixed-frame point: with several scanners merged, the one that saw it
   // (the apex of P3 eq. 6's hidden area).
   static Eigen::Vector2d nearestSensor(const Frame& f, const Eigen::Vector2d& p) {
@@ -466,7 +494,8 @@ class LegPeople : public Tracker {
   std::vector<double> follow_zone_;
   double static_radius_;
   double report_coast_, follow_coast_;
-  bool support_;  // support_gate > 0: the tracker is given the returns of no leg circle
+  bool support_;      // support_gate > 0: the tracker is given the returns of no leg circle
+  bool out_of_view_;  // see LegPeopleStageParams::out_of_view
   mutable bool classifier_seen_ = false;
 };
 
