@@ -4,7 +4,9 @@
 // scissoring alone (confirm_stride), never by travel; a rigid pair slid and turned by the robot
 // never is; a person standing where one is expected (a following robot's zone) is confirmed
 // after follow_confirm_time, through a scan that misses them and clutter beside them; a person's
-// velocity is not carried through a scan where the motion is unknown (unknown_motion_tau).
+// velocity is not carried through a scan where the motion is unknown (unknown_motion_tau). And
+// where the robot turns fast (max_travel_turn_rate) the way a tentative person goes is no
+// evidence for their confirmation.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
@@ -179,4 +181,37 @@ TEST_CASE("where the motion is unknown a lost person is re-identified only where
   };
   CHECK(run(true));
   CHECK_FALSE(run(false));
+}
+
+TEST_CASE("the way a pair goes while the robot turns fast does not confirm them", "[legs]") {
+  // A walker's scissoring legs (score 0.5: confirm_travel applies) going 1 m/s along +x for 2 s,
+  // the robot turning at `turn` rad/s the first `turning` s. Returns the walker's x when first
+  // confirmed (NaN: never).
+  auto confirmedAt = [](double turn, double turning) {
+    LegPeopleParams p;  // max_travel_turn_rate 15 deg/s, confirm_travel 0.5 m
+    LegPeopleTracker tr(p);
+    for (int k = 0; k <= 20; ++k) {
+      const double t = 0.1 * k;
+      const auto [l, r] = pedtrack::test::walkerLegs(t, 0, 1.0);
+      std::vector<LegDetection> legs{{l + Eigen::Vector2d(1, 2), 0.5, kSensor, 0},
+                                     {r + Eigen::Vector2d(1, 2), 0.5, kSensor, 1}};
+      tr.step(t, legs, {}, {}, true, {}, {}, t < turning ? turn : 0.0);
+      for (const PersonState& s : tr.people())
+        if (s.confirmed) return s.p.x();
+    }
+    return double(NAN);
+  };
+  const double straight = confirmedAt(0, 0);
+  REQUIRE_FALSE(std::isnan(straight));
+  CHECK(straight >= 1.45);  // confirm_travel from where the pair formed (x >= 1)
+  CHECK(straight < 1.8);
+  // Turning at 20 deg/s throughout: never; for the first second: confirmed only after going
+  // confirm_travel since the turn ended (at x ~ 2).
+  CHECK(std::isnan(confirmedAt(20 * M_PI / 180, 3)));
+  const double after_turn = confirmedAt(20 * M_PI / 180, 1);
+  REQUIRE_FALSE(std::isnan(after_turn));
+  CHECK(after_turn >= 2.45);
+  CHECK(after_turn < 2.7);
+  // Slower than the limit: as if driving straight.
+  CHECK(confirmedAt(10 * M_PI / 180, 3) == Catch::Detail::Approx(straight));
 }

@@ -3,6 +3,7 @@
 // leg or clutter cluster is tracked, leg-like pairs become people, confirmed once they move.
 // A local occupancy grid of the static scene (and an optional prior map) keeps people from
 // starting on walls and furniture. With `follow`, one person is picked and marked "following".
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include <cmath>
@@ -121,6 +122,10 @@ const ParamTable<LegPeopleParams>& trackerTable() {
               "0: off, both")
           .real(&T::reidentify_max, "reidentify_max", "m", 0, 100,
                 "... that radius grows by at most this much beyond leg_gate")
+          .real(&T::max_travel_turn_rate, "max_travel_turn_rate", "deg/s", 0, 3600,
+                "the way a tentative person goes while the robot turns faster than this does "
+                "not count towards confirm_travel (skewed scans and scan matching err most in "
+                "turns: furniture slides at a walker's pace); 0: off")
           .integer(&T::reidentify_leg_scans, "reidentify_leg_scans", "scans", 0, 1000,
                    "a confirmed person with no leg left takes back a lone walking leg "
                    "(off the static scene, no free leg-like object, furniture included, within "
@@ -287,7 +292,7 @@ class LegPeople : public Tracker {
     };
     tracker_.setFollowed(followed_);
     tracker_.step(f.t, legs, is_static, returnsOutsideLegs(f), !f.motion_unknown, expected,
-                  occluded);
+                  occluded, turnRate(f));
     if (scene_ && !f.motion_unknown) scene_->update(f, tracker_.occupiedByPeople());
     const auto people = tracker_.people();
     // For the next frame's stages (scan matching leaves people's returns out): everyone but
@@ -400,6 +405,16 @@ class LegPeople : public Tracker {
     return false;
   }
 
+  // How fast the robot turned since the last frame (rad/s, absolute), by the frames' poses.
+  double turnRate(const Frame& f) {
+    const double yaw = f.robot_pose.yaw();
+    double rate = 0;
+    if (!std::isnan(last_yaw_t_) && f.t > last_yaw_t_)
+      rate = std::abs(mrpt::math::wrapToPi(yaw - last_yaw_)) / (f.t - last_yaw_t_);
+    last_yaw_ = yaw, last_yaw_t_ = f.t;
+    return rate;
+  }
+
   // Whether no 2D scanner of the frame looks at p: outside every scan's aperture or beyond its
   // maximum range. A person there is unseen for want of a view, not because they left.
   static bool outOfView(const Frame& f, const Eigen::Vector2d& p) {
@@ -490,7 +505,9 @@ class LegPeople : public Tracker {
   bool report_tentative_;
   std::string follow_;
   long follow_id_ = 0, followed_ = 0;
-  double out_of_zone_since_ = NAN;  // since when the person followed is out of follow_zone
+  double out_of_zone_since_ = NAN;
+  double last_yaw_ = 0, last_yaw_t_ = NAN;  // the robot's yaw at the last frame (turnRate)  //
+                                            // since when the person followed is out of follow_zone
   std::vector<double> follow_zone_;
   double static_radius_;
   double report_coast_, follow_coast_;

@@ -45,9 +45,11 @@ void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
                             const std::function<bool(double, double)>& is_static,
                             const std::vector<LegReturn>& returns, bool motion_known,
                             const std::function<bool(double, double)>& expected,
-                            const std::function<bool(double, double, double)>& occluded) {
+                            const std::function<bool(double, double, double)>& occluded,
+                            double turn_rate) {
   for (const LegDetection& l : legs) classified_ = classified_ || l.scored;
   motion_known_ = motion_known;
+  turning_fast_ = p_.max_travel_turn_rate > 0 && turn_rate > p_.max_travel_turn_rate * M_PI / 180;
   expected_ = expected;
   occluded_ = occluded;
   const double dt = started_ ? std::clamp(t - t_, 0.0, 1.0) : 0.0;
@@ -326,8 +328,12 @@ void LegPeopleTracker::updatePeople(double t, const std::vector<LegDetection>& l
     const Eigen::Vector2d c(P.est.x(), P.est.y());
     // Travel counts only where a leg was seen: a coasting filter that extrapolates a jump (a leg
     // re-associated to clutter) would otherwise confirm a ghost without any measurement. Nor
-    // where the robot's motion is unknown: the way starts again where the person is.
-    if (!motion_known_) P.origin = c;
+    // where the robot's motion is unknown: the way starts again where the person is. Nor the way
+    // seen while the robot turns fast (max_travel_turn_rate): it is left out of the travel.
+    if (!motion_known_)
+      P.origin = c;
+    else if (!P.confirmed && P.seen && turning_fast_)
+      P.origin += c - P.seen_at;
     if (P.seen) P.travelled = std::max(P.travelled, (c - P.origin).norm());
     if (P.seen) P.seen_at = c, P.seen_v = P.est.velocity();
     if (P.seen && P.confirmed) P.tracked += dt_person;
