@@ -94,6 +94,10 @@ const ParamTable<LegPeopleParams>& trackerTable() {
                 "... and once its legs scissored: their separation along its motion swung "
                 "over this range (two objects slid together by the robot's motion never "
                 "do); 0: off")
+          .real(&T::max_travel_turn_rate, "max_travel_turn_rate", "deg/s", 0, 3600,
+                "the way a tentative person goes while the robot turns faster than this does "
+                "not count towards confirm_travel (skewed scans and scan matching err most in "
+                "turns: furniture slides at a walker's pace); 0: off")
           .real(
               &T::lost_velocity_window, "lost_velocity_window", "s", 0, 60,
               "a confirmed person lost from sight coasts at their centre's mean velocity over the "
@@ -122,10 +126,6 @@ const ParamTable<LegPeopleParams>& trackerTable() {
               "0: off, both")
           .real(&T::reidentify_max, "reidentify_max", "m", 0, 100,
                 "... that radius grows by at most this much beyond leg_gate")
-          .real(&T::max_travel_turn_rate, "max_travel_turn_rate", "deg/s", 0, 3600,
-                "the way a tentative person goes while the robot turns faster than this does "
-                "not count towards confirm_travel (skewed scans and scan matching err most in "
-                "turns: furniture slides at a walker's pace); 0: off")
           .integer(&T::reidentify_leg_scans, "reidentify_leg_scans", "scans", 0, 1000,
                    "a confirmed person with no leg left takes back a lone walking leg "
                    "(off the static scene, no free leg-like object, furniture included, within "
@@ -505,9 +505,8 @@ class LegPeople : public Tracker {
   bool report_tentative_;
   std::string follow_;
   long follow_id_ = 0, followed_ = 0;
-  double out_of_zone_since_ = NAN;
-  double last_yaw_ = 0, last_yaw_t_ = NAN;  // the robot's yaw at the last frame (turnRate)  //
-                                            // since when the person followed is out of follow_zone
+  double out_of_zone_since_ = NAN;          // since when the person followed is out of follow_zone
+  double last_yaw_ = 0, last_yaw_t_ = NAN;  // the robot's yaw at the last frame (turnRate)
   std::vector<double> follow_zone_;
   double static_radius_;
   double report_coast_, follow_coast_;
