@@ -272,6 +272,28 @@ TEST_CASE("shape tracker static scene: a post learned starts no track; a tracked
   CHECK(standing(0.4) == std::vector<std::size_t>{1, 1, 1, 1, 1, 1});
   CHECK(standing(0).back() == 0);
 
+  // Foliage: the returns of a bush scatter, and where they fall this scan (0.2-0.4 m beside
+  // where they fell for 4 s) no cell is static yet. Read on each point's own cell, the fragment
+  // starts a track; with static_radius (0.3 m) its points lie by the learned cells, and it does
+  // not.
+  auto beside = [](double radius) {
+    ShapeTrackerParams p;
+    p.static_scene = true;
+    p.static_radius = radius;
+    ShapeTracker tracker(p);
+    std::mt19937 gen(7);
+    std::size_t reported = 0;
+    for (int k = 0; k < 60; ++k) {
+      const double y = k < 40 ? 0.0 : 0.3;
+      Frame f = torsoFrame(0.1 * k, torso(5, y, M_PI, 0.1, 0.1, 10, 6, gen), k < 40 ? 0.3 : 0.9);
+      tracker.process(f);
+      reported = std::max(reported, f.tracks.size());
+    }
+    return reported;
+  };
+  CHECK(beside(0) == 1);
+  CHECK(beside(0.3) == 0);
+
   // The fixed frame jumps (motion unknown): the grid forgets, and a place learned starts tracks
   // again.
   ShapeTrackerParams p;

@@ -121,7 +121,8 @@ void ShapeTracker::process(Frame& f) {
 bool ShapeTracker::onStaticScene(const Candidate& c, double t) const {
   if (!scene_ || c.cloud.points.empty()) return false;
   std::size_t on = 0;
-  for (const Eigen::Vector2d& q : c.cloud.points) on += scene_->isStatic(q.x(), q.y(), t);
+  for (const Eigen::Vector2d& q : c.cloud.points)
+    on += scene_->isStatic(q.x(), q.y(), t, p_.static_radius);
   return double(on) >= p_.static_share * double(c.cloud.points.size());
 }
 

@@ -65,6 +65,9 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
           .real(&P::static_share, "static_share", "", 0.01, 1,
                 "share of a cluster's fit-band points on static cells that keeps it from "
                 "starting a track")
+          .real(&P::static_radius, "static_radius", "m", 0, 2,
+                "a fit-band point counts as on static cells when one lies within this distance "
+                "(porous foliage leaves gaps in the grid; 0: the point's own cell)")
           .real(path(&P::scene, &StaticScene::Options::persist), "static_persist", "s", 0, 3600,
                 "a cell occupied this long (not near a track) is static scene: longer than a "
                 "walker's stance, shorter than a moving robot sees a parked car")

@@ -49,6 +49,12 @@ struct ShapeTrackerParams {
   /// no track. Returns near any track (confirmed or not) are not learned.
   bool static_scene = false;
   double static_share = 0.5;
+  /// m: a torso point counts as on the static scene when a static cell lies within this
+  /// distance of it. Foliage (hedges, bushes) is porous: each scan's returns scatter through
+  /// its depth, and a tentative track on a fragment keeps the returns within
+  /// scene.exclusion_radius of it unlearned, so the cells under the next fragment there rarely
+  /// become static; the hedge on either side, out of that disc, does. 0: the point's own cell.
+  double static_radius = 0.3;
   StaticScene::Options scene = [] {
     StaticScene::Options o;
     o.cell = 0.1;  // a torso is ~0.45 x 0.3 m; 3D returns are sparser than a 2D scan's
