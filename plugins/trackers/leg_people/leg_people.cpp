@@ -97,7 +97,8 @@ const ParamTable<LegPeopleParams>& trackerTable() {
           .real(&T::max_travel_turn_rate, "max_travel_turn_rate", "deg/s", 0, 3600,
                 "the way a tentative person goes while the robot turns faster than this does "
                 "not count towards confirm_travel (skewed scans and scan matching err most in "
-                "turns: furniture slides at a walker's pace); 0: off")
+                "turns: furniture slides at a walker's pace); 0: off",
+                kDegree)
           .real(
               &T::lost_velocity_window, "lost_velocity_window", "s", 0, 60,
               "a confirmed person lost from sight coasts at their centre's mean velocity over the "

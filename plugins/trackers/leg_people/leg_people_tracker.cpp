@@ -49,7 +49,7 @@ void LegPeopleTracker::step(double t, const std::vector<LegDetection>& legs,
                             double turn_rate) {
   for (const LegDetection& l : legs) classified_ = classified_ || l.scored;
   motion_known_ = motion_known;
-  turning_fast_ = p_.max_travel_turn_rate > 0 && turn_rate > p_.max_travel_turn_rate * M_PI / 180;
+  turning_fast_ = p_.max_travel_turn_rate > 0 && turn_rate > p_.max_travel_turn_rate;
   expected_ = expected;
   occluded_ = occluded;
   const double dt = started_ ? std::clamp(t - t_, 0.0, 1.0) : 0.0;

@@ -128,7 +128,7 @@ struct LegPeopleParams {
   /// leg_tracker's outdoor following recording (both legs seen, thigh height) that distance
   /// ranged over 0.14 m in the median second, over 0.10 m in 80 % of them.
   double confirm_stride = 0.1;
-  /// deg/s: the way a tentative person is seen to go while the robot turns faster than this
+  /// The way a tentative person is seen to go while the robot turns faster than this
   /// does not count towards their confirmation (confirm_travel). A real scanner sweeps its
   /// scan over ~0.1 s while the robot turns, and matching such skewed scans (scan odometry) errs
   /// most in turns: furniture then slides through the fixed frame at a walker's pace. At 15
@@ -136,8 +136,8 @@ struct LegPeopleParams {
   /// negative_2 bag (a wheelchair driving and turning among furniture, no people; plain and 8
   /// fault seeds) 22 -> 4 confirmed tracks in all (20 deg/s: 13); simulated crowd from a robot
   /// turning in place at ~56 deg/s (no sweep skew in the simulator) MOTA -0.005 (seeds 11, 100,
-  /// 200, 300); following dev bag unchanged. 0: off.
-  double max_travel_turn_rate = 15;
+  /// 200, 300); following dev bag unchanged. 0: off. Held in rad/s (the key is in deg/s).
+  double max_travel_turn_rate = 15 * (M_PI / 180);
   double reacquire_spread =
       0.5;  ///< m/s, a confirmed person's missing-leg gate widens this fast while unseen
   double reacquire_max = 0.6;  ///< m, ... by at most this much
