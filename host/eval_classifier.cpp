@@ -3,6 +3,7 @@
 // Table 1's layout, detection and false-positive rates, the ROC curve's area, and the curves
 // drawn to a PNG.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "commands.h"
@@ -68,12 +69,28 @@ std::string table(const ModelResult& r, double threshold) {
       r.at_tpr.threshold);
 }
 
+// One row per sample: its label (1 person, 0 not) and each model's score, so a user can pick
+// out the samples a model gets wrong (rows in the order of --save-samples).
+void writeScoresCsv(const std::string& path, const std::vector<ModelResult>& rs) {
+  std::ofstream out(path);
+  if (!out) throw ConfigError("--save-scores: cannot write " + path);
+  out << "label";
+  for (std::size_t i = 0; i < rs.size(); ++i) out << ",score_" << i;
+  out << "\n";
+  const std::size_t n = rs.empty() ? 0 : rs[0].y.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    out << (rs[0].y[k] == Label::Person ? 1 : 0);
+    for (const auto& r : rs) out << "," << r.scores[k];
+    out << "\n";
+  }
+}
+
 }  // namespace
 
 int evalClassifierCommand(const std::vector<std::string>& args) {
   std::vector<std::string> models, sims, positives, negatives, plugin_path;
-  std::string dataset, samples, save_samples, pipeline, topic, labels_topic, region, roc, metric,
-      weighting;
+  std::string dataset, samples, save_samples, save_scores, pipeline, topic, labels_topic, region,
+      roc, metric, weighting;
   long frame_step = 1, k = 0, minkowski_p = 0;
   double min_range = 0, max_range = 0, threshold = 0.5, at_fp = 0.05, at_detection = 0.90;
   po::options_description o("options");
@@ -82,6 +99,8 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
       "dataset", po::value(&dataset), "test dataset file (configs/training/*.ini)")(
       "samples", po::value(&samples), "labelled samples CSV instead of a dataset")(
       "save-samples", po::value(&save_samples), "also write the collected samples (CSV)")(
+      "save-scores", po::value(&save_scores),
+      "write every sample's label and each model's score (CSV, in the samples' order)")(
       "pipeline", po::value(&pipeline), "segmentation pipeline (without a dataset file)")(
       "sim", po::value(&sims)->composing(), "simulated scenario (per-point truth labels)")(
       "positive", po::value(&positives)->composing(), "recording of people (see pedtrack train)")(
@@ -162,6 +181,7 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
     rs.push_back(std::move(r));
   }
   if (!roc.empty()) drawRoc(roc, rs, threshold);
+  if (!save_scores.empty()) writeScoresCsv(save_scores, rs);
   if (vm.count("json")) {
     std::string out = "{\"samples\": " + std::to_string(all.size()) +
                       ", \"persons\": " + std::to_string(all.count(Label::Person)) +

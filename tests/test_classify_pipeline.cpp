@@ -112,6 +112,30 @@ TEST_CASE("pedtrack train: deterministic for a seed, and the model it writes is 
   CHECK(run.exit_code == 0);
 }
 
+TEST_CASE("pedtrack eval --save-scores: each sample's label and score, as the confusion counts",
+          "[classify]") {
+  const std::string dir = freshDir("classify_scores");
+  const auto r = runHost(
+      {"eval", "--model", kModels + "person3d_knn.yml", "--pipeline", kConfigs + "detect_3d.ini",
+       "--sim", kConfigs + "scenarios/classify_scene.ini", "--frame-step", "30", "--save-samples",
+       dir + "/samples.csv", "--save-scores", dir + "/scores.csv", "--json", "-q"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto samples = readCsv(dir + "/samples.csv");
+  const auto scores = readCsv(dir + "/scores.csv");
+  REQUIRE(scores.count("label"));
+  REQUIRE(scores.count("score_0"));
+  REQUIRE(scores.at("label") == samples.at("label"));
+  double tp = 0, fp = 0;
+  for (std::size_t i = 0; i < scores.at("label").size(); ++i) {
+    const double q = scores.at("score_0")[i];
+    REQUIRE((q >= 0 && q <= 1));
+    if (q >= 0.5) (scores.at("label")[i] == 1 ? tp : fp) += 1;
+  }
+  CHECK(tp == jsonNumber(r.output, "tp"));
+  CHECK(fp == jsonNumber(r.output, "fp"));
+}
+
 TEST_CASE("a corrupt, truncated or wrong-version model stops the run with exit 2", "[classify]") {
   const std::string dir = freshDir("classify_bad_model");
   const std::string good = readFile(kModels + "person3d_knn.yml");
