@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The 3D person classifiers on scene types left out of training (leave one scene type out):
 # samples of five scene types (classify_scene, street_moving, park_static, plaza_groups,
-# parking_static; seeds 601-603, none of the shipped models' training seeds) are collected once;
+# parking_static; seeds 601-603, none of the shipped models' training seeds), segmented by
+# people_3d_vlp16.ini's own stages as the shipped forest's training data is, are collected once;
 # for each type, k-NN (P2's six features), SVM (all features) and the random forest (all
 # features) are trained on the other four and scored on it. Prints one line per type and model
 # and draws docs/roc_person3d_TYPE.png. Usage: scripts/classifier-loso.sh [build-dir] [work-dir]
@@ -14,7 +15,7 @@ types="classify_scene street_moving park_static plaza_groups parking_static"
 for t in $types; do
   [ -s "$work/s_$t.csv" ] && continue
   {
-    printf '[dataset]\npipeline = %s/configs/detect_3d.ini\nframe_step = 5\nmin_range = 1\n' "$(pwd)"
+    printf '[dataset]\npipeline = %s/configs/people_3d_vlp16.ini\nframe_step = 5\nmin_range = 1\n' "$(pwd)"
     printf 'max_range = 20\n'
     for seed in 601 602 603; do
       printf '[sim.s%s]\nscenario = %s/configs/scenarios/%s.ini\nseed = %s\n' "$seed" "$(pwd)" "$t" "$seed"
