@@ -3,7 +3,6 @@
 // Table 1's layout, detection and false-positive rates, the ROC curve's area, and the curves
 // drawn to a PNG.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "commands.h"
@@ -67,22 +66,6 @@ std::string table(const ModelResult& r, double threshold) {
       c.tp + c.fn, 100 * c.falsePositiveRate(), c.fp, c.fp + c.tn, r.auc, 100 * r.at_fpr.tpr,
       100 * r.at_fp, r.at_fpr.threshold, 100 * r.at_tpr.fpr, 100 * r.at_detection,
       r.at_tpr.threshold);
-}
-
-// One row per sample: its label (1 person, 0 not) and each model's score, so a user can pick
-// out the samples a model gets wrong (rows in the order of --save-samples).
-void writeScoresCsv(const std::string& path, const std::vector<ModelResult>& rs) {
-  std::ofstream out(path);
-  if (!out) throw ConfigError("--save-scores: cannot write " + path);
-  out << "label";
-  for (std::size_t i = 0; i < rs.size(); ++i) out << ",score_" << i;
-  out << "\n";
-  const std::size_t n = rs.empty() ? 0 : rs[0].y.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    out << (rs[0].y[k] == Label::Person ? 1 : 0);
-    for (const auto& r : rs) out << "," << r.scores[k];
-    out << "\n";
-  }
 }
 
 }  // namespace
@@ -181,7 +164,11 @@ int evalClassifierCommand(const std::vector<std::string>& args) {
     rs.push_back(std::move(r));
   }
   if (!roc.empty()) drawRoc(roc, rs, threshold);
-  if (!save_scores.empty()) writeScoresCsv(save_scores, rs);
+  if (!save_scores.empty()) {
+    std::vector<const std::vector<double>*> scores;
+    for (const auto& r : rs) scores.push_back(&r.scores);
+    writeScoresCsv(save_scores, rs.front().y, scores);
+  }
   if (vm.count("json")) {
     std::string out = "{\"samples\": " + std::to_string(all.size()) +
                       ", \"persons\": " + std::to_string(all.count(Label::Person)) +

@@ -27,6 +27,25 @@ void writeSamplesCsv(const std::string& path, const classify::SampleSet& s) {
   if (!out.flush()) throw DataError(path + ": write failed");
 }
 
+void writeScoresCsv(const std::string& path, const std::vector<classify::Label>& y,
+                    const std::vector<const std::vector<double>*>& scores) {
+  std::ofstream out(path);
+  if (!out) throw ConfigError(path + ": cannot write the scores file");
+  out << "label";
+  for (std::size_t m = 0; m < scores.size(); ++m) out << ",score_" << m;
+  out << '\n';
+  char buf[32];
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    out << int(y[i]);
+    for (const auto* s : scores) {
+      std::snprintf(buf, sizeof buf, ",%.9g", (*s)[i]);
+      out << buf;
+    }
+    out << '\n';
+  }
+  if (!out.flush()) throw DataError(path + ": write failed");
+}
+
 classify::SampleSet readSamplesCsv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ConfigError(path + ": samples file not found");
