@@ -313,3 +313,36 @@ TEST_CASE("shape tracker static scene: a post learned starts no track; a tracked
   }
   CHECK(after == 1);
 }
+
+TEST_CASE("shape tracker re-identification: a person lost and back keeps their id",
+          "[shape][tracker][reid]") {
+  // A walker at 1 m/s along x, confirmed, hidden for `hidden` s (deleted after max_misses = 10
+  // scans), then seen again `offset` m beside where their walk carried them. Returns the ids of
+  // the confirmed rows before and after.
+  auto run = [](double reidentify_time, double hidden, double offset, bool jump = false) {
+    ShapeTrackerParams p;
+    p.reidentify_time = reidentify_time;
+    ShapeTracker tracker(p);
+    std::mt19937 gen(11);
+    std::vector<long> ids;
+    const int gap = int(std::lround(hidden / 0.1));
+    for (int k = 0; k < 40 + gap; ++k) {
+      const double t = 0.1 * k, x = 3 + t;
+      const bool seen = k < 20 || k >= 20 + gap;
+      Frame f =
+          seen ? torsoFrame(t, torso(x, k < 20 ? 0 : offset, 0, 0.18, 0.09, 20, 3, gen)) : Frame();
+      f.t = t;
+      f.motion_unknown = jump && k == 18 + gap;  // after the deletion (k = 29)
+      tracker.process(f);
+      for (const Track& tr : f.tracks)
+        if (tr.status == "confirmed" && (ids.empty() || ids.back() != tr.id)) ids.push_back(tr.id);
+    }
+    return ids;
+  };
+  CHECK(run(4, 1.5, 0) == std::vector<long>{1});           // back where they walked to: the same id
+  CHECK(run(4, 1.5, 1.2) == std::vector<long>{1});         // 1.2 m off: inside gate + 1.5 s x 1 m/s
+  CHECK(run(0, 1.5, 0) == std::vector<long>{1, 2});        // off (P1): a new person
+  CHECK(run(4, 1.5, 3.0) == std::vector<long>{1, 2});      // beyond gate + reidentify_max (2 m)
+  CHECK(run(1, 1.5, 0) == std::vector<long>{1, 2});        // confirmed again 1.8 s after last seen
+  CHECK(run(4, 1.5, 0, true) == std::vector<long>{1, 2});  // the fixed frame jumped meanwhile
+}

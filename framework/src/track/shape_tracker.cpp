@@ -80,8 +80,17 @@ ShapeTracker::ShapeTrack ShapeTracker::birth(const Candidate& c) {
 
 void ShapeTracker::process(Frame& f) {
   const double dt = clock_.step(f.t);
-  // The fixed frame jumped by an unknown amount: what the grid learned may lie anywhere.
-  if (scene_ && f.motion_unknown) scene_->forget();
+  // The fixed frame jumped by an unknown amount: what the grid learned, and where lost people
+  // were last seen, may lie anywhere.
+  if (f.motion_unknown) {
+    if (scene_) scene_->forget();
+    lost_.clear();
+  }
+  // Lost tracks unseen longer than reidentify_time are gone for good.
+  lost_.erase(
+      std::remove_if(lost_.begin(), lost_.end(),
+                     [&](const LostTrack& l) { return f.t - l.last_seen > p_.reidentify_time; }),
+      lost_.end());
   for (ShapeTrack& t : tracks_) t.estimate->predict(dt);
   const std::vector<Candidate> cands = candidates(f);
   std::vector<Eigen::Vector2d> predicted;
@@ -98,24 +107,62 @@ void ShapeTracker::process(Frame& f) {
       taken[i] = 1;
       t.estimate->update(cands[i].cloud, rng_);
       t.misses = 0;
+      const bool was_confirmed = t.confirmed;
       step(t, true, cands[i].score);
+      // A person confirmed where one was lost is that person back (their id kept).
+      if (t.confirmed && !was_confirmed)
+        if (const long id = takeLostId(t.estimate->position(), f.t); id >= 0) t.id = id;
       t.score = cands[i].score;
       t.cluster = cands[i].cluster;
+      t.seen_at = t.estimate->position();
+      t.last_seen = f.t;
     } else {
       t.estimate->miss();
       ++t.misses;
       t.cluster = -1;
-      if (!step(t, false, 0)) continue;
+      const bool was_confirmed = t.confirmed;  // M-of-N's deletion clears it
+      if (!step(t, false, 0)) {
+        if (was_confirmed && p_.reidentify_time > 0) {
+          const Track r = t.estimate->row();  // coasting keeps the last velocity
+          lost_.push_back({t.id, t.seen_at, Eigen::Vector2d(r.vx, r.vy), t.last_seen});
+        }
+        continue;
+      }
     }
     kept.push_back(std::move(t));
   }
   tracks_ = std::move(kept);
   for (std::size_t i = 0; i < cands.size(); ++i)
     if (!taken[i] && cands[i].score >= p_.q_person &&
-        int(cands[i].cloud.points.size()) >= p_.birth_points && !onStaticScene(cands[i], f.t))
-      tracks_.push_back(birth(cands[i]));
+        int(cands[i].cloud.points.size()) >= p_.birth_points && !onStaticScene(cands[i], f.t)) {
+      ShapeTrack t = birth(cands[i]);
+      if (t.confirmed)  // M-of-N with one hit
+        if (const long id = takeLostId(t.estimate->position(), f.t); id >= 0) t.id = id;
+      t.seen_at = t.estimate->position();
+      t.last_seen = f.t;
+      tracks_.push_back(std::move(t));
+    }
   if (scene_ && !f.motion_unknown) learnStaticScene(f);
   report(f);
+}
+
+long ShapeTracker::takeLostId(const Eigen::Vector2d& q, double t) {
+  // The nearest lost person by the distance to where they were last seen (they stopped) or to
+  // where their last velocity carried them (they walked on behind whoever hid them), within
+  // gate plus what they may have walked since, capped.
+  int best = -1;
+  double best_cost = 1;
+  for (std::size_t r = 0; r < lost_.size(); ++r) {
+    const LostTrack& l = lost_[r];
+    const double unseen = t - l.last_seen;
+    const double d = std::min((l.seen_at - q).norm(), (l.seen_at + unseen * l.seen_v - q).norm());
+    const double cost = d / (p_.gate + std::min(p_.reidentify_speed * unseen, p_.reidentify_max));
+    if (cost < best_cost) best = int(r), best_cost = cost;
+  }
+  if (best < 0) return -1;
+  const long id = lost_[best].id;
+  lost_.erase(lost_.begin() + best);
+  return id;
 }
 
 bool ShapeTracker::onStaticScene(const Candidate& c, double t) const {

@@ -76,6 +76,13 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
                 "static_range + 5) m round the robot)")
           .real(path(&P::scene, &StaticScene::Options::max_range), "static_range", "m", 1, 100,
                 "returns farther than this from the sensor are not learned (nor cleared past)")
+          .real(&P::reidentify_time, "reidentify_time", "s", 0, 60,
+                "ours: a confirmed track deleted for misses is kept lost until unseen this long; a "
+                "track confirmed within its radius takes its id back (0: off, P1)")
+          .real(&P::reidentify_speed, "reidentify_speed", "m/s", 0, 10,
+                "a lost track's re-identification radius grows from gate by this per second "
+                "unseen ...")
+          .real(&P::reidentify_max, "reidentify_max", "m", 0, 20, "... by at most this much")
           .text(path(&P::scene, &StaticScene::Options::prior_map), "prior_map",
                 "optional map of the fixed frame: ROS map.yaml or MRPT .gridmap; its "
                 "occupied cells are static scene")

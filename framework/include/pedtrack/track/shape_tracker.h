@@ -55,6 +55,13 @@ struct ShapeTrackerParams {
   /// scene.exclusion_radius of it unlearned, so the cells under the next fragment there rarely
   /// become static; the hedge on either side, out of that disc, does. 0: the point's own cell.
   double static_radius = 0.3;
+  /// Ours (#45): a confirmed track deleted after max_misses is kept lost (not reported) until it
+  /// has been unseen this many seconds; a new track confirmed within its re-identification radius
+  /// takes its id back (the identity only: what is reported and when is unchanged). The radius is
+  /// `gate` plus reidentify_speed times the time unseen, at most reidentify_max more; distances are
+  /// to where the person was last seen and to where their last velocity carried them. 0: off (P1).
+  double reidentify_time = 0;
+  double reidentify_speed = 1.0, reidentify_max = 1.0;
   StaticScene::Options scene = [] {
     StaticScene::Options o;
     o.cell = 0.1;  // a torso is ~0.45 x 0.3 m; 3D returns are sparser than a 2D scan's
@@ -99,6 +106,14 @@ class ShapeTracker {
     int misses = 0;
     double score = 0;
     int cluster = -1;
+    Eigen::Vector2d seen_at{0, 0};  ///< the estimate's position after its last update
+    double last_seen = 0;
+  };
+  // A confirmed track deleted for misses, kept for re-identification (reidentify_time).
+  struct LostTrack {
+    long id = 0;
+    Eigen::Vector2d seen_at, seen_v;
+    double last_seen = 0;
   };
 
   std::vector<Candidate> candidates(const Frame& f) const;
@@ -107,6 +122,9 @@ class ShapeTracker {
   // status by M-of-N or by evidence (confirm_evidence); false when it is deleted.
   bool step(ShapeTrack& t, bool associated, double q) const;
   void report(Frame& f);
+  // The id of the lost track nearest q (fixed frame) within its re-identification radius at
+  // time t, taken out of lost_; -1 when there is none.
+  long takeLostId(const Eigen::Vector2d& q, double t);
   // Static scene: whether a candidate lies on it, and the frame's returns learned into it.
   bool onStaticScene(const Candidate& c, double t) const;
   void learnStaticScene(const Frame& f);
@@ -119,6 +137,7 @@ class ShapeTracker {
   TrackIds ids_;
   std::mt19937 rng_;
   std::vector<ShapeTrack> tracks_;
+  std::vector<LostTrack> lost_;
   std::vector<Eigen::Vector2d> obstacles_, people_;  ///< scratch for learnStaticScene
 };
 
