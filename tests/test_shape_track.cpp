@@ -346,3 +346,53 @@ TEST_CASE("shape tracker re-identification: a person lost and back keeps their i
   CHECK(run(1, 1.5, 0) == std::vector<long>{1, 2});        // confirmed again 1.8 s after last seen
   CHECK(run(4, 1.5, 0, true) == std::vector<long>{1, 2});  // the fixed frame jumped meanwhile
 }
+
+TEST_CASE("shape tracker: a confirmed track keeps its cluster from a nearer tentative one",
+          "[shape][tracker]") {
+  // A person standing at (5, 0), tracked (id 1); then a second cluster (a bag put down, a split
+  // piece) at (5, 0.8) starts a tentative track. One scan later a single cluster at (5, 0.45):
+  // 0.45 m from the person's track, 0.35 m from the tentative one. Returns the id of the track
+  // that cluster updated, 0 when no reported track took it.
+  auto run = [](double penalty) {
+    ShapeTrackerParams p;
+    p.tentative_penalty = penalty;
+    ShapeTracker tracker(p);
+    std::mt19937 gen(12);
+    auto frame = [&](double t, const std::vector<double>& ys) {
+      std::vector<std::array<float, 3>> pts;
+      std::vector<std::size_t> starts;
+      for (double y : ys) {
+        starts.push_back(pts.size());
+        for (const auto& q : torso(5, y, M_PI, 0.18, 0.09, 20, 3, gen)) pts.push_back(q);
+      }
+      Frame f = torsoFrame(t, pts);
+      f.clusters.clear();
+      f.detections.clear();
+      for (std::size_t c = 0; c < ys.size(); ++c) {
+        Cluster cl;
+        const std::size_t end = c + 1 < ys.size() ? starts[c + 1] : pts.size();
+        for (std::size_t i = starts[c]; i < end; ++i) cl.indices.push_back(std::uint32_t(i));
+        f.clusters.push_back(cl);
+        Detection d;
+        d.cluster = int(c);
+        d.score = 0.9;
+        d.x = 5, d.y = ys[c];
+        f.detections.push_back(d);
+      }
+      return f;
+    };
+    for (int k = 0; k < 20; ++k) {
+      Frame f = frame(0.1 * k, {0.0});
+      tracker.process(f);
+    }
+    Frame f = frame(2.0, {0.0, 0.8});
+    tracker.process(f);
+    f = frame(2.1, {0.45});
+    tracker.process(f);
+    for (const Track& tr : f.tracks)
+      if (tr.cluster == 0) return tr.id;
+    return 0L;
+  };
+  CHECK(run(0) == 0);    // P1: the tentative track took it, the person's track coasts
+  CHECK(run(0.6) == 1);  // the person's track keeps it
+}

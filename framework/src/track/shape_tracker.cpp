@@ -97,7 +97,15 @@ void ShapeTracker::process(Frame& f) {
   for (const ShapeTrack& t : tracks_) predicted.push_back(t.estimate->position());
   const Assignment a = gnnAssociate(
       int(tracks_.size()), int(cands.size()),
-      [&](int r, int i) { return (cands[i].position - predicted[r]).norm(); }, p_.gate);
+      [&](int r, int i) {
+        // A tentative track pays tentative_penalty: it wins a cluster from a confirmed track
+        // only when that much nearer (often it was born on the person's split piece, or on the
+        // clutter beside them, while their confirmed track missed a scan).
+        const double d = (cands[i].position - predicted[r]).norm();
+        if (d > p_.gate) return double(INFINITY);
+        return tracks_[r].confirmed ? d : d + p_.tentative_penalty;
+      },
+      p_.gate + p_.tentative_penalty);
   std::vector<char> taken(cands.size(), 0);
   std::vector<ShapeTrack> kept;
   for (std::size_t k = 0; k < tracks_.size(); ++k) {

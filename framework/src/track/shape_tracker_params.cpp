@@ -27,6 +27,9 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
                 "an existing track also takes detections scoring above this (hysteresis)")
           .real(&P::gate, "gate", "m", 0.01, 20,
                 "largest distance between a track's prediction and a cluster (Hungarian)")
+          .real(&P::tentative_penalty, "tentative_penalty", "m", 0, 20,
+                "ours: added to a tentative track's association cost, so a confirmed track keeps "
+                "its person's cluster unless a tentative one is this much nearer (0: off, P1)")
           .integer(&P::confirm_hits, "confirm_hits", "", 1, 32,
                    "M of M-of-N: associations that confirm a track")
           .integer(&P::confirm_window, "confirm_window", "", 1, 32,

@@ -30,6 +30,9 @@ struct ShapeTrackerParams {
   Eigen::VectorXd q_rates;
   double q_person = 0.5, q_min = 0.2;  ///< score to start a track / to feed one
   double gate = 1.0;                   ///< largest track–cluster distance (m)
+  /// Ours (#45): m added to a tentative track's association cost, so a confirmed track keeps its
+  /// person's cluster unless a tentative one is this much nearer. 0: off (P1).
+  double tentative_penalty = 0;
   int confirm_hits = 3, confirm_window = 5, max_misses = 10;
   /// > 0: a track is confirmed by accumulated classifier evidence (ScoreEvidence) instead of
   /// M-of-N: log-odds to confirm; a tentative track is deleted when its evidence falls to half
