@@ -230,6 +230,17 @@ TEST_CASE("score evidence confirms steady persons, not one high score", "[track]
   CHECK(bush.refuted());  // 3 + 0.20 - 1 - 6 x 0.85 <= -2.5
 }
 
+TEST_CASE("re-identification's radius and distance to a lost person", "[track]") {
+  const Reidentification reid{1.0, 1.0};
+  CHECK(reid.radius(0.8, 0.3) == Approx(1.1));  // 0.8 + 1 m/s x 0.3 s
+  CHECK(reid.radius(0.8, 5.0) == Approx(1.8));  // grown by at most 1 m
+  // Last seen at (0, 0) walking 1 m/s along x: 2 s later (2, 0.5) is 0.5 m from where the
+  // velocity carried them, (0, -0.3) 0.3 m from where they were seen.
+  const Eigen::Vector2d at(0, 0), v(1, 0);
+  CHECK(Reidentification::lostDistance(at, v, 2, {2, 0.5}) == Approx(0.5));
+  CHECK(Reidentification::lostDistance(at, v, 2, {0, -0.3}) == Approx(0.3));
+}
+
 TEST_CASE("GNN takes the cheapest gated pairs", "[track]") {
   const double c[2][3] = {{1, 5, 9}, {2, 9, 9}};
   const auto a = gnnAssociate(

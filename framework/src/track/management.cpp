@@ -67,4 +67,13 @@ void ScoreEvidence::add(bool associated, double q) {
   sum_ += associated ? logOdds(q) : miss_;
 }
 
+double Reidentification::radius(double gate, double unseen) const {
+  return gate + std::min(speed * unseen, max);
+}
+
+double Reidentification::lostDistance(const Eigen::Vector2d& seen_at, const Eigen::Vector2d& seen_v,
+                                      double walked, const Eigen::Vector2d& p) {
+  return std::min((seen_at - p).norm(), (seen_at + walked * seen_v - p).norm());
+}
+
 }  // namespace pedtrack::track

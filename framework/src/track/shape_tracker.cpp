@@ -158,13 +158,14 @@ long ShapeTracker::takeLostId(const Eigen::Vector2d& q, double t) {
   // The nearest lost person by the distance to where they were last seen (they stopped) or to
   // where their last velocity carried them (they walked on behind whoever hid them), within
   // gate plus what they may have walked since, capped.
+  const Reidentification reid{p_.reidentify_speed, p_.reidentify_max};
   int best = -1;
   double best_cost = 1;
   for (std::size_t r = 0; r < lost_.size(); ++r) {
     const LostTrack& l = lost_[r];
     const double unseen = t - l.last_seen;
-    const double d = std::min((l.seen_at - q).norm(), (l.seen_at + unseen * l.seen_v - q).norm());
-    const double cost = d / (p_.gate + std::min(p_.reidentify_speed * unseen, p_.reidentify_max));
+    const double d = Reidentification::lostDistance(l.seen_at, l.seen_v, unseen, q);
+    const double cost = d / reid.radius(p_.gate, unseen);
     if (cost < best_cost) best = int(r), best_cost = cost;
   }
   if (best < 0) return -1;

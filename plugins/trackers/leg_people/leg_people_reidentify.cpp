@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "leg_people/leg_people_state.h"
+#include "pedtrack/track/management.h"
 
 namespace pedtrack::track {
 
@@ -13,7 +14,8 @@ double LegPeopleTracker::reidentifyRadius(const Person& q, double t) const {
   // Where the robot's motion is unknown the frame itself moves by an unknown amount: how far a
   // lost person may have walked says nothing, and clutter streams past their prediction.
   if (!motion_known_) return p_.pose.leg_gate;
-  return p_.pose.leg_gate + std::min(p_.reidentify_speed * (t - q.last_seen), p_.reidentify_max);
+  return Reidentification{p_.reidentify_speed, p_.reidentify_max}.radius(p_.pose.leg_gate,
+                                                                         t - q.last_seen);
 }
 
 // How far p is from where a lost person may be now: where they were predicted (the velocity
@@ -23,8 +25,8 @@ double LegPeopleTracker::reidentifyRadius(const Person& q, double t) const {
 // be kept lost).
 double LegPeopleTracker::lostDistance(const Person& q, double t, const Eigen::Vector2d& p) const {
   const double walked_on = std::min(t - q.last_seen, p_.max_coast);
-  return std::min({(Eigen::Vector2d(q.est.x(), q.est.y()) - p).norm(), (q.seen_at - p).norm(),
-                   (q.seen_at + walked_on * q.seen_v - p).norm()});
+  return std::min((Eigen::Vector2d(q.est.x(), q.est.y()) - p).norm(),
+                  Reidentification::lostDistance(q.seen_at, q.seen_v, walked_on, p));
 }
 
 // Legs of q seen this scan (0-2).

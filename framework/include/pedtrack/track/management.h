@@ -1,6 +1,8 @@
 #pragma once
 // Track-management policies a tracker composes: when a track is confirmed and when it is
-// deleted. Each is a small value type the tracker keeps per track.
+// deleted, and where a lost one may be found again. Each is a small value type the tracker keeps
+// per track.
+#include <Eigen/Core>
 #include <string>
 
 namespace pedtrack::track {
@@ -69,6 +71,20 @@ class ExistenceLlr {
 
  private:
   double confirm_, delete_;
+};
+
+/// Re-identification of a lost confirmed person (ours, #44/#45): how far from where they were
+/// last seen a new track may take their id back, and how far a place is from where they may be.
+struct Reidentification {
+  double speed = 1.0;  ///< m/s: the radius grows by this times the time unseen ...
+  double max = 1.0;    ///< m: ... by at most this much
+  /// The radius around a person unseen for `unseen` s: `gate` + min(speed · unseen, max).
+  double radius(double gate, double unseen) const;
+  /// How far p is from where a lost person may be: where they were last seen (seen_at; they
+  /// stopped) or where their last velocity seen_v carried them in `walked` s (they walked on
+  /// behind whoever hid them), whichever is nearer.
+  static double lostDistance(const Eigen::Vector2d& seen_at, const Eigen::Vector2d& seen_v,
+                             double walked, const Eigen::Vector2d& p);
 };
 
 }  // namespace pedtrack::track
