@@ -95,6 +95,11 @@ void ShapeTracker::process(Frame& f) {
   const std::vector<Candidate> cands = candidates(f);
   std::vector<Eigen::Vector2d> predicted;
   for (const ShapeTrack& t : tracks_) predicted.push_back(t.estimate->position());
+  // A cluster on the learned static scene is a bin, a post or a hedge: it starts no track, and
+  // (static_feeds off) updates none, so a track that strayed onto it from a person passing by
+  // coasts and ends there instead of living on it.
+  std::vector<char> on_static(cands.size(), 0);
+  for (std::size_t i = 0; i < cands.size(); ++i) on_static[i] = onStaticScene(cands[i], f.t);
   const Assignment a = gnnAssociate(
       int(tracks_.size()), int(cands.size()),
       [&](int r, int i) {
@@ -102,7 +107,7 @@ void ShapeTracker::process(Frame& f) {
         // only when that much nearer (often it was born on the person's split piece, or on the
         // clutter beside them, while their confirmed track missed a scan).
         const double d = (cands[i].position - predicted[r]).norm();
-        if (d > p_.gate) return double(INFINITY);
+        if (d > p_.gate || (on_static[i] && !p_.static_feeds)) return double(INFINITY);
         return tracks_[r].confirmed ? d : d + p_.tentative_penalty;
       },
       p_.gate + p_.tentative_penalty);
@@ -142,7 +147,7 @@ void ShapeTracker::process(Frame& f) {
   tracks_ = std::move(kept);
   for (std::size_t i = 0; i < cands.size(); ++i)
     if (!taken[i] && cands[i].score >= p_.q_person &&
-        int(cands[i].cloud.points.size()) >= p_.birth_points && !onStaticScene(cands[i], f.t)) {
+        int(cands[i].cloud.points.size()) >= p_.birth_points && !on_static[i]) {
       ShapeTrack t = birth(cands[i]);
       if (t.confirmed)  // M-of-N with one hit
         if (const long id = takeLostId(t.estimate->position(), f.t); id >= 0) t.id = id;

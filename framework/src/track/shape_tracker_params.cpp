@@ -64,10 +64,14 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
           .boolean(&P::static_scene, "static_scene",
                    "ours: a grid of the fixed frame learns where returns stay put for "
                    "static_persist seconds, not near any track; a cluster with static_share of "
-                   "its fit-band points on it starts no track (P1: off)")
+                   "its fit-band points on it starts no track and updates none (P1: off)")
           .real(&P::static_share, "static_share", "", 0.01, 1,
                 "share of a cluster's fit-band points on static cells that keeps it from "
-                "starting a track")
+                "starting or updating a track")
+          .boolean(&P::static_feeds, "static_feeds",
+                   "a cluster on the static scene still updates existing tracks (only births "
+                   "are kept off it); false: a track that strays onto a bin or a hedge coasts "
+                   "and ends there")
           .real(&P::static_radius, "static_radius", "m", 0, 2,
                 "a fit-band point counts as on static cells when one lies within this distance "
                 "(porous foliage leaves gaps in the grid; 0: the point's own cell)")

@@ -49,9 +49,11 @@ struct ShapeTrackerParams {
   bool report_tentative = false;
   /// Ours (#45): a grid of the fixed frame learns where the clusters' returns stay put (walls,
   /// posts, parked cars, bushes); a cluster with static_share of its torso points on it starts
-  /// no track. Returns near any track (confirmed or not) are not learned.
+  /// no track and (static_feeds false) updates none. Returns near any track (confirmed or not)
+  /// are not learned.
   bool static_scene = false;
   double static_share = 0.5;
+  bool static_feeds = false;  ///< a cluster on the static scene still updates tracks
   /// m: a torso point counts as on the static scene when a static cell lies within this
   /// distance of it. Foliage (hedges, bushes) is porous: each scan's returns scatter through
   /// its depth, and a tentative track on a fragment keeps the returns within
