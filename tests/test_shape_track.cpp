@@ -62,7 +62,7 @@ Frame torsoFrame(double t, const std::vector<std::array<float, 3>>& pts, double 
   return f;
 }
 
-// A frame with one cluster and one detection per point set (scores alike).
+// A frame with one cluster per point set, each with a detection scoring scores[k].
 Frame clustersFrame(double t, const std::vector<std::vector<std::array<float, 3>>>& sets,
                     const std::vector<double>& scores) {
   std::vector<std::array<float, 3>> all;

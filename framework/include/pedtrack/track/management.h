@@ -1,7 +1,7 @@
 #pragma once
 // Track-management policies a tracker composes: when a track is confirmed and when it is
-// deleted, and where a lost one may be found again. Each is a small value type the tracker keeps
-// per track.
+// deleted, and where a lost one may be found again. Each is a small value type a tracker keeps
+// per track (or, for re-identification's rule, once).
 #include <Eigen/Core>
 #include <string>
 
