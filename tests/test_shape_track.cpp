@@ -410,27 +410,9 @@ TEST_CASE("shape tracker: a confirmed track keeps its cluster from a nearer tent
     ShapeTracker tracker(p);
     std::mt19937 gen(12);
     auto frame = [&](double t, const std::vector<double>& ys) {
-      std::vector<std::array<float, 3>> pts;
-      std::vector<std::size_t> starts;
-      for (double y : ys) {
-        starts.push_back(pts.size());
-        for (const auto& q : torso(5, y, M_PI, 0.18, 0.09, 20, 3, gen)) pts.push_back(q);
-      }
-      Frame f = torsoFrame(t, pts);
-      f.clusters.clear();
-      f.detections.clear();
-      for (std::size_t c = 0; c < ys.size(); ++c) {
-        Cluster cl;
-        const std::size_t end = c + 1 < ys.size() ? starts[c + 1] : pts.size();
-        for (std::size_t i = starts[c]; i < end; ++i) cl.indices.push_back(std::uint32_t(i));
-        f.clusters.push_back(cl);
-        Detection d;
-        d.cluster = int(c);
-        d.score = 0.9;
-        d.x = 5, d.y = ys[c];
-        f.detections.push_back(d);
-      }
-      return f;
+      std::vector<std::vector<std::array<float, 3>>> people;
+      for (double y : ys) people.push_back(torso(5, y, M_PI, 0.18, 0.09, 20, 3, gen));
+      return clustersFrame(t, people, std::vector<double>(ys.size(), 0.9));
     };
     for (int k = 0; k < 20; ++k) {
       Frame f = frame(0.1 * k, {0.0});
