@@ -2,6 +2,7 @@
 
 #include <mrpt/core/format.h>
 
+#include <array>
 #include <cmath>
 
 #include "pedtrack/outputs.h"
@@ -63,6 +64,49 @@ std::string setupLine(const EvalSetup& s) {
   return o;
 }
 
+// "Where the errors are": misses by the returns on the person (0–9, 10–29, ≥ 30; a bin of
+// truths without visible_points only when there are some), false positives by the nearest
+// person (and how many of them coasted).
+std::string budgetText(const eval::ErrorBudget& b, bool following) {
+  static const char* visible[] = {"0-9", "10-29", "30+", "unknown"};
+  static const char* near[] = {"< 1 m", "1-2 m", ">= 2 m"};
+  std::string o =
+      "\nWhere the errors are (misses by returns on the person, false positives by distance to "
+      "the nearest person)\n  misses              ";
+  for (std::size_t k = 0; k < eval::ErrorBudget::kVisibleBins; ++k) {
+    const std::size_t n = b.truths_by_visible[k];
+    if (k + 1 == eval::ErrorBudget::kVisibleBins && n == 0) continue;
+    const double share = n ? 100.0 * double(b.misses_by_visible[k]) / double(n) : 0.0;
+    o += format("%s%s: %zu of %zu (%.1f %%)", k ? ", " : "", visible[k], b.misses_by_visible[k], n,
+                share);
+  }
+  o += "\n";
+  if (following) return o;
+  o += "  false positives     ";
+  for (std::size_t k = 0; k < eval::ErrorBudget::kDistanceBins; ++k)
+    o += format("%s%s: %zu (%zu coasting)", k ? ", " : "", near[k], b.fp_by_distance[k],
+                b.coasting_fp_by_distance[k]);
+  return o + "\n";
+}
+
+template <std::size_t N>
+std::string countList(const std::array<std::size_t, N>& a) {
+  std::string o = "[";
+  for (std::size_t k = 0; k < N; ++k) o += (k ? ", " : "") + std::to_string(a[k]);
+  return o + "]";
+}
+
+std::string budgetJson(const eval::ErrorBudget& b) {
+  Json j;
+  j.raw("visible_bins", "[\"0-9\", \"10-29\", \"30+\", \"unknown\"]")
+      .raw("truths_by_visible", countList(b.truths_by_visible))
+      .raw("misses_by_visible", countList(b.misses_by_visible))
+      .raw("nearest_person_bins_m", "[\"<1\", \"1-2\", \">=2\"]")
+      .raw("false_positives_by_nearest_person", countList(b.fp_by_distance))
+      .raw("coasting_false_positives_by_nearest_person", countList(b.coasting_fp_by_distance));
+  return j.str();
+}
+
 }  // namespace
 
 std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s) {
@@ -82,6 +126,7 @@ std::string trackingText(const eval::TrackingReport& r, const EvalSetup& s) {
   o += format("  ID switches         %zu\n", c.id_switches);
   o += format("  fragmentations      %zu\n", c.fragmentations);
   o += format("  unscored matches    %zu\n", c.unscored_matches);
+  if (c.truths) o += budgetText(r.budget, s.following.has_value());
   o += format("\nErrors over the %zu matches\n", e.pairs);
   o += format("  position RMSE       %s m   (x %s, y %s)\n", fixed(e.rmse()).c_str(),
               fixed(e.rmseX()).c_str(), fixed(e.rmseY()).c_str());
@@ -195,6 +240,7 @@ std::string trackingJson(const eval::TrackingReport& r, const EvalSetup& s,
       .count("min_visible", std::size_t(s.min_visible))
       .raw("following", s.following ? std::to_string(*s.following) : "null")
       .raw("clear_mot", clear.str())
+      .raw("error_budget", budgetJson(r.budget))
       .raw("errors", err.str())
       .raw("identity", identity)
       .raw("hota", hota)

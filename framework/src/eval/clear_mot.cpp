@@ -74,6 +74,9 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
   Memory memory;
   std::unordered_map<long, FragState> frag;
   res.absorbed.resize(frames.size());
+  res.scored.resize(frames.size());
+  res.missed.resize(frames.size());
+  res.unmatched.resize(frames.size());
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const EvalFrame& f = frames[k];
     const auto& tr = f.truths;
@@ -118,10 +121,12 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
     for (std::size_t i = 0; i < tr.size(); ++i) {
       const Object& t = tr[i];
       const bool sc = scored(t);
+      if (sc) res.scored[k].push_back(i);
       if (t2e[i] < 0) {
         if (!sc) continue;
         ++c.truths;
         ++c.misses;
+        res.missed[k].push_back(i);
         if (frag[t.id].matched_before) frag[t.id].in_gap = true;
         continue;
       }
@@ -149,8 +154,11 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
       res.pairs.push_back({k, t, e, d});
     }
     if (!opt.following)
-      for (int t : e2t)
-        if (t < 0) ++c.false_positives;
+      for (std::size_t j = 0; j < es.size(); ++j)
+        if (e2t[j] < 0) {
+          ++c.false_positives;
+          res.unmatched[k].push_back(j);
+        }
     for (const auto& [track_id, truth_id] : new_pairs) memory.set(track_id, truth_id);
   }
   return res;

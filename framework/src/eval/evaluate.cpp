@@ -16,6 +16,7 @@ TrackingReport evaluateTracking(const std::vector<std::vector<EvalFrame>>& runs,
   for (const auto& frames : runs) {
     const ClearMotResult cm = clearMot(frames, co);
     rep.clear += cm.counts;
+    rep.budget += errorBudget(frames, cm);
     rep.errors += pairErrors(cm.pairs);
     const auto ne = neesSamples(cm.pairs);
     const auto ni = nisSamples(cm.pairs);

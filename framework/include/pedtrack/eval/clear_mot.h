@@ -56,6 +56,9 @@ struct ClearMotResult {
   std::vector<MatchedPair> pairs;  ///< every scored match, in frame order
   /// Per frame: indices of the estimates absorbed by unscored truths.
   std::vector<std::vector<std::size_t>> absorbed;
+  /// Per frame: indices of the scored truths, of those missed, and of the estimates counted as
+  /// false positives (none when following).
+  std::vector<std::vector<std::size_t>> scored, missed, unmatched;
 };
 
 ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOptions& options);

@@ -6,6 +6,7 @@
 
 #include "pedtrack/eval/clear_mot.h"
 #include "pedtrack/eval/consistency.h"
+#include "pedtrack/eval/error_budget.h"
 #include "pedtrack/eval/hota.h"
 #include "pedtrack/eval/identity.h"
 #include "pedtrack/eval/pair_errors.h"
@@ -22,6 +23,7 @@ struct TrackingOptions {
 struct TrackingReport {
   std::size_t runs = 0;
   ClearMotCounts clear;  ///< summed over runs (MOTA, MOTP pooled)
+  ErrorBudget budget;    ///< where the misses and false positives are, summed over runs
   PairErrors errors;
   /// Not computed in following mode (the benchmark's following score is CLEAR MOT only).
   std::optional<IdentityCounts> identity;
