@@ -64,21 +64,21 @@ std::string setupLine(const EvalSetup& s) {
   return o;
 }
 
-// "Where the errors are": misses by the returns on the person (0–9, 10–29, ≥ 30; a bin of
-// truths without visible_points only when there are some), false positives by the nearest
-// person (and how many of them coasted).
+// "Where the errors are": misses by the returns on the person (0–9, 10–29, ≥ 30, unknown: the
+// bins holding truths), false positives by the nearest person (and how many of them coasted).
 std::string budgetText(const eval::ErrorBudget& b, bool following) {
   static const char* visible[] = {"0-9", "10-29", "30+", "unknown"};
   static const char* near[] = {"< 1 m", "1-2 m", ">= 2 m"};
   std::string o =
       "\nWhere the errors are (misses by returns on the person, false positives by distance to "
       "the nearest person)\n  misses              ";
+  const char* sep = "";
   for (std::size_t k = 0; k < eval::ErrorBudget::kVisibleBins; ++k) {
     const std::size_t n = b.truths_by_visible[k];
-    if (k + 1 == eval::ErrorBudget::kVisibleBins && n == 0) continue;
-    const double share = n ? 100.0 * double(b.misses_by_visible[k]) / double(n) : 0.0;
-    o += format("%s%s: %zu of %zu (%.1f %%)", k ? ", " : "", visible[k], b.misses_by_visible[k], n,
-                share);
+    if (n == 0) continue;
+    o += format("%s%s: %zu of %zu (%.1f %%)", sep, visible[k], b.misses_by_visible[k], n,
+                100.0 * double(b.misses_by_visible[k]) / double(n));
+    sep = ", ";
   }
   o += "\n";
   if (following) return o;
