@@ -121,6 +121,49 @@ TEST_CASE("leg circles: a leg arc is found, a wall and a concave arc are not", "
   CHECK(seg::detectLeg(leg, 0, 0, p, out));
 }
 
+TEST_CASE("a segment of two legs, one just behind the other, splits at the range step", "[legs]") {
+  // A person standing with one foot ahead, 1.2 m from the sensor: the far leg (5 cm, at
+  // (1.32, 0.13)) shows 9 returns beside the near one (at (1.2, 0)), 0.128 m from its last
+  // return, below the segmenter's 0.13 m gap: one segment, which no circle fits.
+  auto arc = [](double cx, double cy, int n, double from, double to) {
+    fit::Points2 pts;
+    const double toward = std::atan2(-cy, -cx);
+    for (int i = 0; i < n; ++i) {
+      const double a = toward + from + (to - from) * i / (n - 1);
+      pts.emplace_back(cx + 0.05 * std::cos(a), cy + 0.05 * std::sin(a));
+    }
+    return pts;
+  };
+  // In scan order (bearing rising): the near leg's front (-2.4 to 2.4 deg), then what shows
+  // of the far leg beyond it (3.5 to 6.7 deg).
+  fit::Points2 seg = arc(1.2, 0, 9, M_PI / 2, -M_PI / 2);
+  const fit::Points2 far = arc(1.32, 0.13, 9, M_PI / 2, -M_PI / 6);
+  seg.insert(seg.end(), far.begin(), far.end());
+  seg::LegParams p;
+  seg::Leg leg;
+  REQUIRE_FALSE(seg::detectLeg(seg, 0, 0, p, leg));
+  const std::size_t cut = seg::legSplitPoint(seg, 0, 0, 0.07, p);
+  REQUIRE(cut == 9);
+  // By hand: |(1.3250, 0.0801)| - |(1.2, 0.05)| = 1.3274 - 1.2010.
+  CHECK(seg[9].norm() - seg[8].norm() == Approx(0.1264).margin(0.0005));
+  REQUIRE(seg::detectLeg(fit::Points2(seg.begin(), seg.begin() + 9), 0, 0, p, leg));
+  CHECK(leg.circle.x == Approx(1.2).margin(1e-6));
+  CHECK(leg.circle.y == Approx(0).margin(1e-6));
+  REQUIRE(seg::detectLeg(fit::Points2(seg.begin() + 9, seg.end()), 0, 0, p, leg));
+  CHECK(leg.circle.x == Approx(1.32).margin(1e-6));
+  CHECK(leg.circle.y == Approx(0.13).margin(1e-6));
+  // A step below min_jump, parts shorter than min_points, or the rule off: no cut.
+  CHECK(seg::legSplitPoint(seg, 0, 0, 0.15, p) == 0);
+  p.min_points = 10;
+  CHECK(seg::legSplitPoint(seg, 0, 0, 0.07, p) == 0);
+  p.min_points = 3;
+  CHECK(seg::legSplitPoint(seg, 0, 0, 0, p) == 0);
+  // A smooth wall has no step.
+  fit::Points2 wall;
+  for (int i = 0; i < 30; ++i) wall.emplace_back(2.0, -0.5 + i / 29.0);
+  CHECK(seg::legSplitPoint(wall, 0, 0, 0.07, p) == 0);
+}
+
 TEST_CASE("legs pair closest first within the separation limit", "[legs]") {
   CHECK(seg::pairLegs({{0, 0}, {0.3, 0}, {2, 0}, {2.5, 0}, {5, 0}}, 0.8) ==
         std::vector<int>{1, 0, 3, 2, -1});

@@ -19,6 +19,8 @@ struct LegCirclesParams {
   seg::LegParams leg;           // P3 eq. 1's bounds and the acceptance tests (leg_detection.h)
   double pair_distance = 0.8;   // m: legs at most this far apart may be one person's
   double merge_distance = 0.1;  // m: one leg seen by several scanners; 0: never merged
+  double split_jump = 0;        // m: a segment that is no leg splits at a range step this large
+  int split_min_points = 3;     // each part of a split needs this many points
 };
 
 const ParamTable<LegCirclesParams>& table() {
@@ -41,6 +43,14 @@ const ParamTable<LegCirclesParams>& table() {
           .real(&P::merge_distance, "merge_distance", "m", 0, 1,
                 "legs of different scans (several scanners) whose centres are closer than this "
                 "are one leg, refitted on all their points; 0: never merged")
+          .real(&P::split_jump, "split_jump", "m", 0, 10,
+                "ours: a segment that is no leg as a whole is cut at its largest range step "
+                "between consecutive points when that is at least this, and each part that is a "
+                "leg becomes one (both legs of a person standing with one foot ahead, closer "
+                "than the segmenter's gap); 0: off (P3)")
+          .integer(&P::split_min_points, "split_min_points", "", 3, 100000,
+                   "points each part of a split segment needs (a circle fitted to a few returns "
+                   "says little)")
           .check(path(&P::leg, &L::r_max), [](const P& p) {
             return p.leg.r_max < p.leg.r_min
                        ? "below min_radius (" + shortestNumber(p.leg.r_min) + ")"
@@ -53,7 +63,11 @@ class LegCircles : public Segmenter {
  public:
   explicit LegCircles(const PluginContext& ctx) : LegCircles(table().read(ctx.params)) {}
   explicit LegCircles(const LegCirclesParams& p)
-      : p_(p.leg), pair_distance_(p.pair_distance), merge_distance_(p.merge_distance) {}
+      : p_(p.leg),
+        pair_distance_(p.pair_distance),
+        merge_distance_(p.merge_distance),
+        split_jump_(p.split_jump),
+        split_min_points_(p.split_min_points) {}
 
   void process(Frame& f) override {
     const auto& c = f.cloud();
@@ -77,13 +91,12 @@ class LegCircles : public Segmenter {
       pts.clear();
       for (std::uint32_t i : cl.indices) pts.emplace_back(xs[i], ys[i]);
       seg::Leg leg;
-      if (!seg::detectLeg(pts, run->sx, run->sy, p_, leg)) continue;
-      cl.cx = leg.circle.x;
-      cl.cy = leg.circle.y;
-      cl.features.push_back(leg.circle.r);
-      cl.features.push_back(leg.residual);
-      found.push_back({leg, std::size_t(run - runs.begin()), pts});
-      legs.push_back(std::move(cl));
+      const std::size_t scan = std::size_t(run - runs.begin());
+      if (!seg::detectLeg(pts, run->sx, run->sy, p_, leg)) {
+        if (split_jump_ > 0 && segmentFeatured(f)) splitLegs(cl, pts, *run, scan, c, legs, found);
+        continue;
+      }
+      addLeg(std::move(cl), leg, pts, scan, legs, found);
     }
     if (runs.size() > 1 && merge_distance_ > 0) legs = merged(std::move(legs), found, c);
     std::vector<Eigen::Vector2d> centres;
@@ -95,6 +108,55 @@ class LegCircles : public Segmenter {
   }
 
  private:
+  static void addLeg(Cluster cl, const seg::Leg& leg, const fit::Points2& pts, std::size_t scan,
+                     std::vector<Cluster>& legs, std::vector<seg::ScanLeg>& found) {
+    cl.cx = leg.circle.x;
+    cl.cy = leg.circle.y;
+    cl.features.push_back(leg.circle.r);
+    cl.features.push_back(leg.residual);
+    found.push_back({leg, scan, pts});
+    legs.push_back(std::move(cl));
+  }
+
+  // Whether the clusters carry scan_segments' features (split parts get theirs recomputed).
+  static bool segmentFeatured(const Frame& f) {
+    return f.cluster_feature_names && *f.cluster_feature_names == seg::segmentFeatureNames();
+  }
+
+  // A segment that is no leg, cut at its largest range step (split_jump): each part that is a
+  // leg becomes a cluster with its own segment features, the step being its jump feature on
+  // the cut side (positive for the nearer part: it stands in front).
+  void splitLegs(const Cluster& cl, const fit::Points2& pts, const seg::ScanRun& run,
+                 std::size_t scan, const mrpt::maps::CSimplePointsMap& cloud,
+                 std::vector<Cluster>& legs, std::vector<seg::ScanLeg>& found) const {
+    seg::LegParams split = p_;
+    split.min_points = std::max(p_.min_points, split_min_points_);
+    const std::size_t cut = seg::legSplitPoint(pts, run.sx, run.sy, split_jump_, split);
+    if (cut == 0) return;
+    static const std::size_t kJumpPrev = 11, kJumpNext = 12;  // segmentFeatureNames()
+    const auto range = [&](const Eigen::Vector2d& q) {
+      return std::hypot(q.x() - run.sx, q.y() - run.sy);
+    };
+    const double step = range(pts[cut]) - range(pts[cut - 1]);
+    seg::Leg parts[2];
+    fit::Points2 subs[2] = {fit::Points2(pts.begin(), pts.begin() + cut),
+                            fit::Points2(pts.begin() + cut, pts.end())};
+    for (int part = 0; part < 2; ++part)
+      if (!seg::detectLeg(subs[part], run.sx, run.sy, split, parts[part])) return;
+    for (int part = 0; part < 2; ++part) {
+      const std::size_t from = part ? cut : 0, to = part ? pts.size() : cut;
+      const fit::Points2& sub = subs[part];
+      const seg::Leg& leg = parts[part];
+      Cluster piece;
+      piece.indices.assign(cl.indices.begin() + from, cl.indices.begin() + to);
+      seg::setCentroidAndExtent(piece, cloud);
+      piece.features =
+          seg::segmentFeatures(sub, run.sx, run.sy, part ? -step : cl.features[kJumpPrev],
+                               part ? cl.features[kJumpNext] : step);
+      addLeg(std::move(piece), leg, sub, scan, legs, found);
+    }
+  }
+
   // One cluster per merged leg: the members' points together, the largest member's segment
   // features (one scan's view of the leg, as the classifiers were trained on), the merged circle.
   std::vector<Cluster> merged(std::vector<Cluster> legs, const std::vector<seg::ScanLeg>& found,
@@ -136,7 +198,8 @@ class LegCircles : public Segmenter {
   }
 
   seg::LegParams p_;
-  double pair_distance_, merge_distance_;
+  double pair_distance_, merge_distance_, split_jump_;
+  int split_min_points_;
   std::shared_ptr<const std::vector<std::string>> upstream_, names_;
 };
 

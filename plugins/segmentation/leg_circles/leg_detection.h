@@ -28,6 +28,14 @@ struct Leg {
 /// fit closely (and, with require_convex, the arc faces the sensor).
 bool detectLeg(const fit::Points2& pts, double sx, double sy, const LegParams& p, Leg& out);
 
+/// Where a segment that is no leg as a whole may be two legs, one just behind the other: the
+/// index of the first point of the second part at the largest range step between consecutive
+/// points (seen from (sx, sy)), when that step is at least `min_jump` and both parts keep
+/// p.min_points (and 3); 0 when there is none. A person standing with one foot a little ahead
+/// shows both legs as one segment when the step between them is below the segmenter's gap.
+std::size_t legSplitPoint(const fit::Points2& pts, double sx, double sy, double min_jump,
+                          const LegParams& p);
+
 /// A detected leg as mergeLegs reads it: which scan (observation) it came from, and its points
 /// (in the frame of the centres).
 struct ScanLeg {
