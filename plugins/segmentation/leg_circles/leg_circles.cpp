@@ -45,9 +45,9 @@ const ParamTable<LegCirclesParams>& table() {
                 "are one leg, refitted on all their points; 0: never merged")
           .real(&P::split_jump, "split_jump", "m", 0, 10,
                 "ours: a segment that is no leg as a whole is cut at its largest range step "
-                "between consecutive points when that is at least this, and each part that is a "
-                "leg becomes one (both legs of a person standing with one foot ahead, closer "
-                "than the segmenter's gap); 0: off (P3)")
+                "between consecutive points when that is at least this, and when both parts are "
+                "legs each becomes one (both legs of a person standing with one foot ahead, "
+                "closer than the segmenter's gap); 0: off (P3)")
           .integer(&P::split_min_points, "split_min_points", "", 3, 100000,
                    "points each part of a split segment needs (a circle fitted to a few returns "
                    "says little)")
