@@ -2,7 +2,8 @@
 // bounded circle fit of P3 eq. 1; circular ones become the frame's clusters (centre = the
 // circle's), with the segment's features plus `leg_radius` and `leg_residual`; a leg that
 // several scanners of the frame saw becomes one cluster (seg::mergeLegs), and legs are paired
-// into person candidates (Cluster::pair).
+// into person candidates (Cluster::pair). With split_jump (ours), a segment that is no leg but
+// two, one just behind the other (a person standing with one foot ahead), is cut between them.
 #include <algorithm>
 
 #include "leg_circles/leg_detection.h"
@@ -118,14 +119,19 @@ class LegCircles : public Segmenter {
     legs.push_back(std::move(cl));
   }
 
+  static std::size_t featureIndex(const std::string& name) {
+    const auto& n = seg::segmentFeatureNames();
+    return std::size_t(std::find(n.begin(), n.end(), name) - n.begin());
+  }
+
   // Whether the clusters carry scan_segments' features (split parts get theirs recomputed).
   static bool segmentFeatured(const Frame& f) {
     return f.cluster_feature_names && *f.cluster_feature_names == seg::segmentFeatureNames();
   }
 
-  // A segment that is no leg, cut at its largest range step (split_jump): each part that is a
-  // leg becomes a cluster with its own segment features, the step being its jump feature on
-  // the cut side (positive for the nearer part: it stands in front).
+  // A segment that is no leg, cut at its largest range step (split_jump): when both parts are
+  // legs, each becomes a cluster with its own segment features, the step being its jump feature
+  // on the cut side (positive for the nearer part: it stands in front).
   void splitLegs(const Cluster& cl, const fit::Points2& pts, const seg::ScanRun& run,
                  std::size_t scan, const mrpt::maps::CSimplePointsMap& cloud,
                  std::vector<Cluster>& legs, std::vector<seg::ScanLeg>& found) const {
@@ -133,7 +139,8 @@ class LegCircles : public Segmenter {
     split.min_points = std::max(p_.min_points, split_min_points_);
     const std::size_t cut = seg::legSplitPoint(pts, run.sx, run.sy, split_jump_, split);
     if (cut == 0) return;
-    static const std::size_t kJumpPrev = 11, kJumpNext = 12;  // segmentFeatureNames()
+    static const std::size_t kJumpPrev = featureIndex("jump_prev"),
+                             kJumpNext = featureIndex("jump_next");
     const auto range = [&](const Eigen::Vector2d& q) {
       return std::hypot(q.x() - run.sx, q.y() - run.sy);
     };
