@@ -237,13 +237,21 @@ int evalTracksOnPeopleBag(const EvalArgs& a) {
 #ifdef PEDTRACK_WITH_ROSBAG
   const auto window = bearingWindow(a.angles);
   std::vector<std::vector<eval::EvalFrame>> runs;
-  std::size_t scans = 0;
+  std::size_t scans = 0, annotated_scans = 0;
+  // Per bag: the time of its last scan with an annotation. After it nobody is annotated (a
+  // recording whose annotation stops early), so no track there can be told target or not.
+  std::vector<double> last_annotated;
   // The frames point into their track tables' rows: every table lives until the scoring is done.
   std::deque<ObjectTable> tables;
   for (std::size_t i = 0; i < a.truth.size(); ++i) {
     BagPeople people = readBagPeople(a.truth[i], a.topic, a.labels_topic);
     tables.push_back(readObjectTable(a.tracks[i]));
     auto tracks = eval::objectsByTime(tables.back(), eval::CoordFrame::Sensor, 0, kTimeTolerance);
+    std::size_t span = 0;
+    for (std::size_t k = 0; k < people.scans.size(); ++k)
+      if (!people.scans[k].objects.empty()) span = k + 1;
+    last_annotated.push_back(span ? people.scans[span - 1].t : -INFINITY);
+    annotated_scans += span;
     if (window) {
       keepBearings(people.scans, *window);
       keepBearings(tracks, *window);
@@ -257,9 +265,15 @@ int evalTracksOnPeopleBag(const EvalArgs& a) {
   opt.hota_distance = a.hota_distance > 0 ? a.hota_distance : a.threshold;
   opt.nis_dof = a.nis_dof;
   const eval::TrackingReport rep = eval::evaluateTracking(runs, opt);
-  std::size_t non_target = 0;  // every track row that matches no annotated person
-  for (const auto& frames : runs)
-    non_target += eval::clearMot(frames, {a.threshold, std::nullopt}).counts.false_positives;
+  // Every track row that matches no annotated person; and those up to each bag's last annotation.
+  std::size_t non_target = 0, non_target_annotated = 0;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const auto cm = eval::clearMot(runs[r], {a.threshold, std::nullopt});
+    non_target += cm.counts.false_positives;
+    for (std::size_t k = 0; k < runs[r].size(); ++k)
+      if (runs[r][k].t <= last_annotated[r] + kTimeTolerance)
+        non_target_annotated += cm.unmatched[k].size();
+  }
   EvalSetup s;
   s.threshold = a.threshold;
   s.frame = "sensor";
@@ -267,20 +281,26 @@ int evalTracksOnPeopleBag(const EvalArgs& a) {
   s.hota_distance = opt.hota_distance;
   s.truth_source = "bag";
   const double per_scan = scans ? double(non_target) / double(scans) : NAN;
+  const double per_annotated =
+      annotated_scans ? double(non_target_annotated) / double(annotated_scans) : NAN;
+  const auto number = [](double v) { return std::isfinite(v) ? mrpt::format("%.10g", v) : "null"; };
   if (a.json) {
-    std::cout << trackingJson(rep, s,
-                              {{"scans", std::to_string(scans)},
-                               {"non_target_track_rows", std::to_string(non_target)},
-                               {"non_target_tracks_per_scan",
-                                std::isfinite(per_scan) ? mrpt::format("%.10g", per_scan) : "null"},
-                               {"angles", a.angles.empty() ? "null" : "\"" + a.angles + "\""}});
+    std::cout << trackingJson(
+        rep, s,
+        {{"scans", std::to_string(scans)},
+         {"non_target_track_rows", std::to_string(non_target)},
+         {"non_target_tracks_per_scan", number(per_scan)},
+         {"annotated_scans", std::to_string(annotated_scans)},
+         {"non_target_track_rows_annotated", std::to_string(non_target_annotated)},
+         {"non_target_tracks_per_annotated_scan", number(per_annotated)},
+         {"angles", a.angles.empty() ? "null" : "\"" + a.angles + "\""}});
   } else {
     std::cout << trackingText(rep, s);
     std::printf(
         "\nBenchmark bags: %zu, %zu scans%s; tracks on no annotated person: %zu rows, "
-        "%.3f per scan\n",
+        "%.3f per scan; up to the last annotated scan (%zu scans): %zu rows, %.3f per scan\n",
         a.truth.size(), scans, a.angles.empty() ? "" : (", bearings " + a.angles).c_str(),
-        non_target, per_scan);
+        non_target, per_scan, annotated_scans, non_target_annotated, per_annotated);
   }
   return exit_code::kOk;
 #else

@@ -74,12 +74,14 @@ struct Annotated {
   double x, y;
 };
 
-// A bag of four scans (t0 + 1 ... t0 + 4), each followed by its annotations.
-std::string writeBenchmarkBag(const std::string& dir) {
-  const std::vector<std::vector<Annotated>> people = {{{7, 1.0, 0}, {8, 3.0, 0}},
-                                                      {{7, 1.1, 0}, {8, 3.0, 0}},
-                                                      {{7, 1.2, 0}},
-                                                      {{7, 1.3, 0}, {8, 3.0, 0.1}}};
+// A bag of four scans (t0 + 1 ... t0 + 4), each followed by its annotations, then `tail` scans
+// nobody annotated (the annotation stopped).
+std::string writeBenchmarkBag(const std::string& dir, int tail = 0) {
+  std::vector<std::vector<Annotated>> people = {{{7, 1.0, 0}, {8, 3.0, 0}},
+                                                {{7, 1.1, 0}, {8, 3.0, 0}},
+                                                {{7, 1.2, 0}},
+                                                {{7, 1.3, 0}, {8, 3.0, 0.1}}};
+  people.resize(people.size() + std::size_t(tail));
   const std::string path = dir + "/bench.bag";
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   for (std::size_t k = 0; k < people.size(); ++k) {
@@ -108,7 +110,8 @@ std::string writeBenchmarkBag(const std::string& dir) {
 // switch; the script's memory is one to one, so the pairs 1-7 and 2-8 are forgotten); scan 4
 // gives person 7 to track 1, while 7 was last matched to track 2 (one more switch), and person 8
 // to track 3, neither remembering anyone (no switch).
-std::string writeTracks(const std::string& dir) {
+// `tail`: also track 1 in scan 5 (after the annotation stopped).
+std::string writeTracks(const std::string& dir, bool tail = false) {
   const std::string path = dir + "/tracks.csv";
   std::string csv = "t,frame,track,x,y,sensor_x,sensor_y\n";
   auto row = [&](int scan, int track, double x, double y) {
@@ -121,6 +124,7 @@ std::string writeTracks(const std::string& dir) {
   row(2, 1, 1.1, 0.2);
   row(3, 2, 1.2, 0.1);
   row(4, 1, 1.3, 0), row(4, 3, 3, 0.1);
+  if (tail) row(5, 1, 1.4, 0);
   writeFile(path, csv);
   return path;
 }
@@ -169,6 +173,25 @@ TEST_CASE("a benchmark bag is scored by clear_mot.py's rules, computed by hand",
   const auto bad = runHost({"eval", "--truth", bag, "--tracks", tracks, "--angles", "12"});
   CHECK(bad.exit_code == 2);
   CHECK(lines(bad.output).size() == 1);
+}
+
+TEST_CASE("after a bag's last annotation no track is judged target or not",
+          "[eval_cli][benchmark]") {
+  // The bag above with two more scans nobody annotated, and track 1 still there in the first:
+  // a track on no annotated person per scan counts it (2 rows in 6 scans); up to the last
+  // annotated scan it does not (1 row, track 3 in scan 1, in 4 scans).
+  const std::string dir = freshDir("eval_benchmark_tail");
+  const std::string bag = writeBenchmarkBag(dir, 2), tracks = writeTracks(dir, true);
+  const auto r = runHost({"eval", "--truth", bag, "--tracks", tracks, "--following", "--json"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(jsonNumber(r.output, "scans") == 6);
+  CHECK(jsonNumber(r.output, "non_target_track_rows") == 2);
+  CHECK(jsonNumber(r.output, "non_target_tracks_per_scan") == Approx(2.0 / 6));
+  CHECK(jsonNumber(r.output, "annotated_scans") == 4);
+  CHECK(jsonNumber(r.output, "non_target_track_rows_annotated") == 1);
+  CHECK(jsonNumber(r.output, "non_target_tracks_per_annotated_scan") == Approx(0.25));
+  CHECK(jsonNumber(r.output, "mota") == Approx(4.0 / 7));  // the score itself is unchanged
 }
 
 TEST_CASE("a message is read from its own definition", "[eval_cli][benchmark]") {
