@@ -79,6 +79,8 @@ class LegCircles : public Segmenter {
     std::vector<seg::ScanLeg> found;
     legs.reserve(f.clusters.size());
     fit::Points2 pts;
+    // Split parts get scan_segments' features recomputed: only segments that carry them split.
+    const bool split = split_jump_ > 0 && segmentFeatured(f);
     for (Cluster& cl : f.clusters) {
       if (cl.indices.empty()) continue;
       // The scan the segment came from: the last run starting at or before its first point.
@@ -94,7 +96,7 @@ class LegCircles : public Segmenter {
       seg::Leg leg;
       const std::size_t scan = std::size_t(run - runs.begin());
       if (!seg::detectLeg(pts, run->sx, run->sy, p_, leg)) {
-        if (split_jump_ > 0 && segmentFeatured(f)) splitLegs(cl, pts, *run, scan, c, legs, found);
+        if (split) splitLegs(cl, pts, *run, scan, c, legs, found);
         continue;
       }
       addLeg(std::move(cl), leg, pts, scan, legs, found);
