@@ -65,13 +65,15 @@ std::string setupLine(const EvalSetup& s) {
 }
 
 // "Where the errors are": misses by the returns on the person (0–9, 10–29, ≥ 30, unknown: the
-// bins holding truths), false positives by the nearest person (and how many of them coasted).
+// bins holding truths), ID switches by the time since the person was last matched, false
+// positives by the nearest person (and how many of them coasted).
 std::string budgetText(const eval::ErrorBudget& b, bool following) {
   static const char* visible[] = {"0-9", "10-29", "30+", "unknown"};
   static const char* near[] = {"< 1 m", "1-2 m", ">= 2 m"};
   std::string o =
-      "\nWhere the errors are (misses by returns on the person, false positives by distance to "
-      "the nearest person)\n  misses              ";
+      "\nWhere the errors are (misses by returns on the person, ID switches by time since the "
+      "person was last matched, false positives by distance to the nearest person)\n"
+      "  misses              ";
   const char* sep = "";
   for (std::size_t k = 0; k < eval::ErrorBudget::kVisibleBins; ++k) {
     const std::size_t n = b.truths_by_visible[k];
@@ -81,6 +83,16 @@ std::string budgetText(const eval::ErrorBudget& b, bool following) {
     sep = ", ";
   }
   o += "\n";
+  static const char* gap[] = {"< 0.5 s", "0.5-2 s", ">= 2 s", "first match"};
+  o += "  ID switches         ";
+  sep = "";
+  for (std::size_t k = 0; k < eval::ErrorBudget::kGapBins; ++k) {
+    if (b.switches_by_gap[k] == 0) continue;
+    o += format("%s%s: %zu (%zu by another person's track, %zu out of sight)", sep, gap[k],
+                b.switches_by_gap[k], b.switches_from_other_by_gap[k], b.switches_unseen_by_gap[k]);
+    sep = ", ";
+  }
+  o += *sep ? "\n" : "none\n";
   if (following) return o;
   o += "  false positives     ";
   for (std::size_t k = 0; k < eval::ErrorBudget::kDistanceBins; ++k)
@@ -103,7 +115,11 @@ std::string budgetJson(const eval::ErrorBudget& b) {
       .raw("misses_by_visible", countList(b.misses_by_visible))
       .raw("nearest_person_bins_m", "[\"<1\", \"1-2\", \">=2\"]")
       .raw("false_positives_by_nearest_person", countList(b.fp_by_distance))
-      .raw("coasting_false_positives_by_nearest_person", countList(b.coasting_fp_by_distance));
+      .raw("coasting_false_positives_by_nearest_person", countList(b.coasting_fp_by_distance))
+      .raw("switch_gap_bins_s", "[\"<0.5\", \"0.5-2\", \">=2\", \"first match\"]")
+      .raw("id_switches_by_gap", countList(b.switches_by_gap))
+      .raw("id_switches_from_other_person_by_gap", countList(b.switches_from_other_by_gap))
+      .raw("id_switches_after_out_of_sight_by_gap", countList(b.switches_unseen_by_gap));
   return j.str();
 }
 

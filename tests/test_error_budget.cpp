@@ -1,6 +1,7 @@
 // Where MOTA's errors are: misses by the returns on the person, false positives by the nearest
 // person and coasting, on frames worked out by hand.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <deque>
 
 #include "pedtrack/eval/error_budget.h"
@@ -75,4 +76,47 @@ TEST_CASE("error budget: following counts no false positives", "[eval][budget]")
   const ErrorBudget b = errorBudget(f, clearMot(f, o));
   CHECK(b.misses_by_visible == std::array<std::size_t, ErrorBudget::kVisibleBins>{1, 1, 1, 0});
   CHECK(b.fp_by_distance == std::array<std::size_t, ErrorBudget::kDistanceBins>{0, 0, 0});
+}
+
+// ID switches, frames 0.1 s apart. Truth A: track 1 (frames 0-1), unscored in frames 2-4 (out of
+// sight), missed in 5, then track 2 in frame 6: a switch 0.5 s after A was last matched (frame
+// 1), its gap 4 frames present of which 3 unscored (out of sight), by a track new to anyone.
+// Truth B: track 3 (frame 0), then track 4 (frame 1): a switch 0.1 s after its last match, by a
+// track new to anyone. Truth D: track 5 (frames 0-1); D gone, track 5 takes the new truth C over
+// in frame 2: a switch at C's first match, by a track from another person.
+TEST_CASE("error budget: ID switches by the gap before them", "[eval][budget]") {
+  std::vector<EvalFrame> f(7);
+  for (std::size_t k = 0; k < f.size(); ++k) f[k].t = 0.1 * double(k);
+  f[0].truths = {truth(1, 0, 20), truth(2, 10, 20), truth(4, 30, 20)};
+  f[0].estimates = {track(1, 0), track(3, 10), track(5, 30)};
+  f[1].truths = {truth(1, 0, 20), truth(2, 10, 20), truth(4, 30, 20)};
+  f[1].estimates = {track(1, 0), track(4, 10), track(5, 30)};
+  f[2].truths = {truth(1, 0, 0, false), truth(3, 20, 20)};
+  f[2].estimates = {track(5, 20)};
+  f[3].truths = {truth(1, 0, 0, false)};
+  f[4].truths = {truth(1, 0, 0, false)};
+  f[5].truths = {truth(1, 0, 20)};
+  f[6].truths = {truth(1, 0, 20)};
+  f[6].estimates = {track(2, 0)};
+  const ClearMotResult cm = clearMot(f, {});
+  REQUIRE(cm.counts.id_switches == 3);
+  REQUIRE(cm.switches.size() == 3);
+  CHECK(cm.switches[0].truth == 2);
+  CHECK(cm.switches[0].gap == Approx(0.1));
+  CHECK_FALSE(cm.switches[0].track_from_other);
+  CHECK(cm.switches[1].truth == 3);
+  CHECK(std::isnan(cm.switches[1].gap));
+  CHECK(cm.switches[1].track_from_other);
+  CHECK(cm.switches[2].truth == 1);
+  CHECK(cm.switches[2].gap == Approx(0.5));
+  CHECK(cm.switches[2].gap_frames == 4);
+  CHECK(cm.switches[2].gap_unscored == 3);
+  const ErrorBudget b = errorBudget(f, cm);
+  using G = std::array<std::size_t, ErrorBudget::kGapBins>;
+  CHECK(b.switches_by_gap == G{1, 1, 0, 1});  // B 0.1 s; A 0.5 s; C at first match
+  CHECK(b.switches_from_other_by_gap == G{0, 0, 0, 1});
+  CHECK(b.switches_unseen_by_gap == G{0, 1, 0, 0});
+  ErrorBudget twice = b;
+  twice += b;
+  CHECK(twice.switches_by_gap == G{2, 2, 0, 2});
 }

@@ -60,10 +60,13 @@ class Memory {
   std::map<long, long> by_track_, by_truth_;
 };
 
-// Per truth id, for fragmentations: matched before, and currently in a gap after a match.
+// Per truth id, for fragmentations: matched before, and currently in a gap after a match; for
+// ID switches: when last matched, and the frames since in which it was present (unscored).
 struct FragState {
   bool matched_before = false;
   bool in_gap = false;
+  double last_match = std::nan("");
+  std::size_t gap_frames = 0, gap_unscored = 0;
 };
 
 }  // namespace
@@ -122,6 +125,11 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
       const Object& t = tr[i];
       const bool sc = scored(t);
       if (sc) res.scored[k].push_back(i);
+      if (t2e[i] < 0 || !sc) {
+        FragState& fs = frag[t.id];
+        ++fs.gap_frames;
+        if (!sc) ++fs.gap_unscored;
+      }
       if (t2e[i] < 0) {
         if (!sc) continue;
         ++c.truths;
@@ -142,11 +150,16 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
       c.distance_sum += d;
       const long* prev_truth = memory.truthOf(e.id);
       const bool switched = prev_truth ? *prev_truth != t.id : memory.hasTruth(t.id);
-      if (switched)
-        ++c.id_switches;
-      else
-        ++c.correct;
       FragState& fs = frag[t.id];
+      if (switched) {
+        ++c.id_switches;
+        res.switches.push_back({k, t.id, e.id, prev_truth != nullptr, f.t - fs.last_match,
+                                fs.gap_frames, fs.gap_unscored});
+      } else {
+        ++c.correct;
+      }
+      fs.last_match = f.t;
+      fs.gap_frames = fs.gap_unscored = 0;
       if (fs.in_gap) ++c.fragmentations;
       fs.in_gap = false;
       fs.matched_before = true;

@@ -1,6 +1,7 @@
 #include "pedtrack/eval/error_budget.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace pedtrack::eval {
@@ -17,6 +18,12 @@ std::size_t distanceBin(double d) {
   return std::size_t(std::upper_bound(e.begin(), e.end(), d) - e.begin());
 }
 
+std::size_t gapBin(double gap) {
+  if (std::isnan(gap)) return ErrorBudget::kGapBins - 1;
+  const auto& e = ErrorBudget::kGapEdges;
+  return std::size_t(std::upper_bound(e.begin(), e.end(), gap) - e.begin());
+}
+
 }  // namespace
 
 ErrorBudget& ErrorBudget::operator+=(const ErrorBudget& o) {
@@ -27,6 +34,11 @@ ErrorBudget& ErrorBudget::operator+=(const ErrorBudget& o) {
   for (std::size_t b = 0; b < kDistanceBins; ++b) {
     fp_by_distance[b] += o.fp_by_distance[b];
     coasting_fp_by_distance[b] += o.coasting_fp_by_distance[b];
+  }
+  for (std::size_t b = 0; b < kGapBins; ++b) {
+    switches_by_gap[b] += o.switches_by_gap[b];
+    switches_from_other_by_gap[b] += o.switches_from_other_by_gap[b];
+    switches_unseen_by_gap[b] += o.switches_unseen_by_gap[b];
   }
   return *this;
 }
@@ -48,6 +60,12 @@ ErrorBudget errorBudget(const std::vector<EvalFrame>& frames, const ClearMotResu
       ++b.fp_by_distance[bin];
       if (e.row && e.row->status == "coasting") ++b.coasting_fp_by_distance[bin];
     }
+  }
+  for (const IdSwitch& s : clear.switches) {
+    const std::size_t bin = gapBin(s.gap);
+    ++b.switches_by_gap[bin];
+    if (s.track_from_other) ++b.switches_from_other_by_gap[bin];
+    if (2 * s.gap_unscored > s.gap_frames) ++b.switches_unseen_by_gap[bin];
   }
   return b;
 }

@@ -51,6 +51,21 @@ struct ClearMotCounts {
   ClearMotCounts& operator+=(const ClearMotCounts& o);
 };
 
+/// One ID switch: where it happened and what came before it.
+struct IdSwitch {
+  std::size_t frame = 0;  ///< index into the frames
+  long truth = 0, track = 0;
+  /// The track was last matched to another person (it took someone else's track over); false:
+  /// the truth's last track lost them and this one is new to them.
+  bool track_from_other = false;
+  /// s since the truth was last matched (scored), NaN if never before (a track from another
+  /// person took a person over at their first match).
+  double gap = 0;
+  /// Frames of that gap in which the truth was present, and of those how many it was unscored
+  /// (too few returns: out of sight, behind others).
+  std::size_t gap_frames = 0, gap_unscored = 0;
+};
+
 struct ClearMotResult {
   ClearMotCounts counts;
   std::vector<MatchedPair> pairs;  ///< every scored match, in frame order
@@ -59,6 +74,7 @@ struct ClearMotResult {
   /// Per frame: indices of the scored truths, of those missed, and of the estimates counted as
   /// false positives (none when following).
   std::vector<std::vector<std::size_t>> scored, missed, unmatched;
+  std::vector<IdSwitch> switches;  ///< every ID switch, in frame order
 };
 
 ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOptions& options);

@@ -4,6 +4,8 @@
 // coasting. A miss of a person hit by three returns asks for another fix than a miss of one in
 // plain view, and a false positive beside a person (a track that drifted or lags off them, a
 // fragment of them) for another fix than one on no person (a bin or a hedge taken for one).
+// ID switches go by how long the person had not been matched: a swap while two people pass
+// (< 0.5 s) asks for another fix than a person found again after seconds out of sight.
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -23,6 +25,14 @@ struct ErrorBudget {
   static constexpr std::size_t kDistanceBins = 3;
   static constexpr std::array<double, 2> kDistanceEdges{1.0, 2.0};
   std::array<std::size_t, kDistanceBins> fp_by_distance{}, coasting_fp_by_distance{};
+  /// ID switches by the time since the person was last matched: < 0.5 s, 0.5–2 s, ≥ 2 s, and
+  /// never matched before (a track taking a new person over); of those, how many by a track
+  /// that was on another person, and how many after a gap the person spent mostly unscored
+  /// (out of sight: more than half its frames).
+  static constexpr std::size_t kGapBins = 4;
+  static constexpr std::array<double, 2> kGapEdges{0.5, 2.0};
+  std::array<std::size_t, kGapBins> switches_by_gap{}, switches_from_other_by_gap{},
+      switches_unseen_by_gap{};
   ErrorBudget& operator+=(const ErrorBudget& o);
 };
 
