@@ -335,6 +335,33 @@ TEST_CASE("shape tracker static scene: a post learned starts no track; a tracked
   CHECK(after == 1);
 }
 
+TEST_CASE("shape tracker static scene: an unmoved track that scores low gives its place up",
+          "[shape][tracker][static]") {
+  // A bin scoring 0.6 from the first scan (above q_person) gets a confirmed track at start-up,
+  // which keeps the grid from learning it. With unmoved_time 3 s it stops doing so 3 s after its
+  // birth (never 0.5 m from there, mean score under 0.8); its cells are static after
+  // static_persist (3 s) more, the bin then feeds the track no longer, and it ends after
+  // max_misses (1 s): nothing is reported from then on. A person standing as long, scoring 0.9,
+  // keeps their track: their detections score as a person's.
+  auto run = [](double unmoved_time, double score) {
+    ShapeTrackerParams p;
+    p.static_scene = true;
+    p.unmoved_time = unmoved_time;
+    ShapeTracker tracker(p);
+    std::mt19937 gen(8);
+    std::vector<std::size_t> counts;
+    for (int k = 0; k < 120; ++k) {
+      Frame f = torsoFrame(0.1 * k, torso(5, 0, M_PI, 0.18, 0.09, 20, 3, gen), score);
+      tracker.process(f);
+      if (k % 20 == 19) counts.push_back(f.tracks.size());
+    }
+    return counts;
+  };
+  CHECK(run(0, 0.6) == std::vector<std::size_t>{1, 1, 1, 1, 1, 1});
+  CHECK(run(3, 0.6) == std::vector<std::size_t>{1, 1, 1, 0, 0, 0});
+  CHECK(run(3, 0.9) == std::vector<std::size_t>{1, 1, 1, 1, 1, 1});
+}
+
 TEST_CASE("shape tracker static scene: a track that strays onto a learned post ends there",
           "[shape][tracker][static]") {
   // A post at (5, 0), scoring 0.3, learned over 4 s. A person (scoring 0.9) walks up to it from

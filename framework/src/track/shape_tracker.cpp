@@ -129,6 +129,9 @@ void ShapeTracker::process(Frame& f) {
       t.cluster = cands[i].cluster;
       t.seen_at = t.estimate->position();
       t.last_seen = f.t;
+      t.moved = std::max(t.moved, (t.seen_at - t.born_at).norm());
+      t.score_sum += cands[i].score;
+      ++t.score_n;
     } else {
       t.estimate->miss();
       ++t.misses;
@@ -151,8 +154,10 @@ void ShapeTracker::process(Frame& f) {
       ShapeTrack t = birth(cands[i]);
       if (t.confirmed)  // M-of-N with one hit
         if (const long id = takeLostId(t.estimate->position(), f.t); id >= 0) t.id = id;
-      t.seen_at = t.estimate->position();
-      t.last_seen = f.t;
+      t.seen_at = t.born_at = t.estimate->position();
+      t.last_seen = t.born = f.t;
+      t.score_sum = cands[i].score;
+      t.score_n = 1;
       tracks_.push_back(std::move(t));
     }
   if (scene_ && !f.motion_unknown) learnStaticScene(f);
@@ -202,7 +207,8 @@ void ShapeTracker::learnStaticScene(const Frame& f) {
   // A person walking with the robot, or standing while tracked, is never learned: their
   // track (confirmed or not) holds their place.
   people_.clear();
-  for (const ShapeTrack& t : tracks_) people_.push_back(t.estimate->position());
+  for (const ShapeTrack& t : tracks_)
+    if (holdsPlace(t, f.t)) people_.push_back(t.estimate->position());
   scene_->updatePoints(f.t, {f.sensor_pose.x(), f.sensor_pose.y()}, obstacles_, people_);
 }
 
@@ -230,6 +236,12 @@ void ShapeTracker::report(Frame& f) {
     row.cluster = t.cluster;
     f.tracks.push_back(std::move(row));
   }
+}
+
+bool ShapeTracker::holdsPlace(const ShapeTrack& t, double now) const {
+  if (p_.unmoved_time <= 0 || !t.confirmed || t.moved >= p_.unmoved_distance) return true;
+  if (now - t.born < p_.unmoved_time) return true;
+  return t.score_sum >= p_.unmoved_score * std::max(1, t.score_n);
 }
 
 }  // namespace pedtrack::track

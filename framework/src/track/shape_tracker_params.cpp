@@ -83,6 +83,16 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
                 "static_range + 5) m round the robot)")
           .real(path(&P::scene, &StaticScene::Options::max_range), "static_range", "m", 1, 100,
                 "returns farther than this from the sensor are not learned (nor cleared past)")
+          .real(&P::unmoved_time, "unmoved_time", "s", 0, 3600,
+                "ours: a confirmed track that stayed within unmoved_distance of where it was born "
+                "this long, its detections' mean score below unmoved_score, no longer keeps the "
+                "static grid from learning its returns (a bin taken for a person at start-up "
+                "becomes static scene); 0: off")
+          .real(&P::unmoved_distance, "unmoved_distance", "m", 0, 100,
+                "see unmoved_time: a track that moved this far from its birth has walked")
+          .real(&P::unmoved_score, "unmoved_score", "", 0, 1,
+                "see unmoved_time: an unmoved track whose detections score this on average is "
+                "a person standing")
           .real(&P::reidentify_time, "reidentify_time", "s", 0, 60,
                 "ours: a confirmed track deleted for misses is kept lost until unseen this long; a "
                 "track confirmed within its radius takes its id back (0: off, P1)")

@@ -66,6 +66,15 @@ struct ShapeTrackerParams {
   /// `gate` plus reidentify_speed times the time unseen, at most reidentify_max more; distances are
   /// to where the person was last seen and to where their last velocity carried them. 0: off (P1).
   double reidentify_time = 0;
+  /// Ours (#45): s. A confirmed track that has stayed within unmoved_distance of where it was
+  /// born for this long, and whose detections' mean classifier score is below unmoved_score,
+  /// no longer keeps the static grid from learning its returns (static_scene): a bin or a post
+  /// taken for a person at start-up then becomes static scene, which feeds and starts no track.
+  /// A person who walked, or whose detections score as a person's, keeps their place however
+  /// long they stand. 0: off (every track keeps the grid off).
+  double unmoved_time = 0;
+  double unmoved_distance = 0.5;  ///< m, see unmoved_time
+  double unmoved_score = 0.8;     ///< see unmoved_time
   double reidentify_speed = 1.0, reidentify_max = 1.0;
   StaticScene::Options scene = [] {
     StaticScene::Options o;
@@ -113,6 +122,11 @@ class ShapeTracker {
     int cluster = -1;
     Eigen::Vector2d seen_at{0, 0};  ///< the estimate's position after its last update
     double last_seen = 0;
+    // unmoved_time: where and when it was born, how far it has been from there, and the sum and
+    // count of its detections' scores.
+    Eigen::Vector2d born_at{0, 0};
+    double born = 0, moved = 0, score_sum = 0;
+    int score_n = 0;
   };
   // A confirmed track deleted for misses, kept for re-identification (reidentify_time).
   struct LostTrack {
@@ -133,6 +147,8 @@ class ShapeTracker {
   // Static scene: whether a candidate lies on it, and the frame's returns learned into it.
   bool onStaticScene(const Candidate& c, double t) const;
   void learnStaticScene(const Frame& f);
+  // Whether t keeps the static grid from learning its returns (unmoved_time).
+  bool holdsPlace(const ShapeTrack& t, double now) const;
 
   ShapeTrackerParams p_;
   std::optional<StaticScene> scene_;
