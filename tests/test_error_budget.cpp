@@ -1,5 +1,5 @@
-// Where MOTA's errors are: misses by the returns on the person, false positives by the nearest
-// person and coasting, on frames worked out by hand.
+// Where MOTA's errors are: misses by the returns on the person, ID switches by the gap before
+// them, false positives by the nearest person and coasting, on frames worked out by hand.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <deque>
