@@ -125,8 +125,8 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
       const Object& t = tr[i];
       const bool sc = scored(t);
       if (sc) res.scored[k].push_back(i);
+      FragState& fs = frag[t.id];
       if (t2e[i] < 0 || !sc) {
-        FragState& fs = frag[t.id];
         ++fs.gap_frames;
         if (!sc) ++fs.gap_unscored;
       }
@@ -135,7 +135,7 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
         ++c.truths;
         ++c.misses;
         res.missed[k].push_back(i);
-        if (frag[t.id].matched_before) frag[t.id].in_gap = true;
+        if (fs.matched_before) fs.in_gap = true;
         continue;
       }
       const Object& e = es[t2e[i]];
@@ -150,7 +150,6 @@ ClearMotResult clearMot(const std::vector<EvalFrame>& frames, const ClearMotOpti
       c.distance_sum += d;
       const long* prev_truth = memory.truthOf(e.id);
       const bool switched = prev_truth ? *prev_truth != t.id : memory.hasTruth(t.id);
-      FragState& fs = frag[t.id];
       if (switched) {
         ++c.id_switches;
         res.switches.push_back({k, t.id, e.id, prev_truth != nullptr, f.t - fs.last_match,

@@ -139,14 +139,11 @@ class LegCircles : public Segmenter {
                  std::vector<Cluster>& legs, std::vector<seg::ScanLeg>& found) const {
     seg::LegParams split = p_;
     split.min_points = std::max(p_.min_points, split_min_points_);
-    const std::size_t cut = seg::legSplitPoint(pts, run.sx, run.sy, split_jump_, split);
+    double step = 0;
+    const std::size_t cut = seg::legSplitPoint(pts, run.sx, run.sy, split_jump_, split, &step);
     if (cut == 0) return;
     static const std::size_t kJumpPrev = featureIndex("jump_prev"),
                              kJumpNext = featureIndex("jump_next");
-    const auto range = [&](const Eigen::Vector2d& q) {
-      return std::hypot(q.x() - run.sx, q.y() - run.sy);
-    };
-    const double step = range(pts[cut]) - range(pts[cut - 1]);
     seg::Leg parts[2];
     fit::Points2 subs[2] = {fit::Points2(pts.begin(), pts.begin() + cut),
                             fit::Points2(pts.begin() + cut, pts.end())};

@@ -21,16 +21,18 @@ bool detectLeg(const fit::Points2& pts, double sx, double sy, const LegParams& p
 }
 
 std::size_t legSplitPoint(const fit::Points2& pts, double sx, double sy, double min_jump,
-                          const LegParams& p) {
+                          const LegParams& p, double* step) {
   const std::size_t part = std::size_t(std::max(3, p.min_points));
   if (min_jump <= 0 || pts.size() < 2 * part) return 0;
   const auto range = [&](std::size_t i) { return std::hypot(pts[i].x() - sx, pts[i].y() - sy); };
   std::size_t best = 0;
-  double best_jump = min_jump;
+  double best_jump = min_jump, best_step = 0;
   for (std::size_t i = part; i + part <= pts.size(); ++i) {
-    const double jump = std::abs(range(i) - range(i - 1));
-    if (jump >= best_jump) best = i, best_jump = jump;
+    const double signed_step = range(i) - range(i - 1);
+    if (std::abs(signed_step) >= best_jump)
+      best = i, best_jump = std::abs(signed_step), best_step = signed_step;
   }
+  if (step) *step = best_step;
   return best;
 }
 

@@ -33,8 +33,9 @@ bool detectLeg(const fit::Points2& pts, double sx, double sy, const LegParams& p
 /// points (seen from (sx, sy)), when that step is at least `min_jump` and both parts keep
 /// p.min_points (and 3); 0 when there is none. A person standing with one foot a little ahead
 /// shows both legs as one segment when the step between them is below the segmenter's gap.
+/// `step` (optional) receives that step, signed: the second part's range less the first's.
 std::size_t legSplitPoint(const fit::Points2& pts, double sx, double sy, double min_jump,
-                          const LegParams& p);
+                          const LegParams& p, double* step = nullptr);
 
 /// A detected leg as mergeLegs reads it: which scan (observation) it came from, and its points
 /// (in the frame of the centres).
