@@ -132,6 +132,7 @@ void ShapeTracker::process(Frame& f) {
       t.moved = std::max(t.moved, (t.seen_at - t.born_at).norm());
       t.score_sum += cands[i].score;
       ++t.score_n;
+      t.full_hits += int(cands[i].cloud.points.size()) >= p_.birth_points;
     } else {
       t.estimate->miss();
       ++t.misses;
@@ -148,9 +149,14 @@ void ShapeTracker::process(Frame& f) {
     kept.push_back(std::move(t));
   }
   tracks_ = std::move(kept);
+  // A cluster too small for a shape fit (birth_points) starts a track only on a score that small
+  // non-person clusters rarely reach, and only clear of every confirmed track's gate (there it
+  // is more likely a piece of that person than someone else).
   for (std::size_t i = 0; i < cands.size(); ++i)
-    if (!taken[i] && cands[i].score >= p_.q_person &&
-        int(cands[i].cloud.points.size()) >= p_.birth_points && !on_static[i]) {
+    if (!taken[i] && cands[i].score >= p_.q_person && !on_static[i] &&
+        (int(cands[i].cloud.points.size()) >= p_.birth_points ||
+         (p_.small_birth_score > 0 && cands[i].score >= p_.small_birth_score &&
+          !nearTrack(cands[i].position, p_.gate)))) {
       ShapeTrack t = birth(cands[i]);
       if (t.confirmed)  // M-of-N with one hit
         if (const long id = takeLostId(t.estimate->position(), f.t); id >= 0) t.id = id;
@@ -158,10 +164,17 @@ void ShapeTracker::process(Frame& f) {
       t.last_seen = t.born = f.t;
       t.score_sum = cands[i].score;
       t.score_n = 1;
+      t.full_hits = int(cands[i].cloud.points.size()) >= p_.birth_points;
       tracks_.push_back(std::move(t));
     }
   if (scene_ && !f.motion_unknown) learnStaticScene(f);
   report(f);
+}
+
+bool ShapeTracker::nearTrack(const Eigen::Vector2d& q, double radius) const {
+  for (const ShapeTrack& t : tracks_)
+    if (t.confirmed && (t.estimate->position() - q).norm() < radius) return true;
+  return false;
 }
 
 long ShapeTracker::takeLostId(const Eigen::Vector2d& q, double t) {
@@ -239,6 +252,10 @@ void ShapeTracker::report(Frame& f) {
 }
 
 bool ShapeTracker::holdsPlace(const ShapeTrack& t, double now) const {
+  // A track fed only by small clusters (small_birth_score) never holds its place: on a few
+  // returns the classifier's score says little, so a post or a bush piece far away that scores
+  // high once must still become static scene; a walker's returns move and are never learned.
+  if (t.full_hits == 0) return false;
   if (p_.unmoved_time <= 0 || !t.confirmed || t.moved >= p_.unmoved_distance) return true;
   if (now - t.born < p_.unmoved_time) return true;
   return t.score_sum >= p_.unmoved_score * std::max(1, t.score_n);

@@ -55,6 +55,11 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
           .integer(&P::birth_points, "birth_points", "", 1, 100000,
                    "points in the fit band a cluster needs to start a track (N_b: a shape can be "
                    "fitted)")
+          .real(&P::small_birth_score, "small_birth_score", "", 0, 1,
+                "ours: a cluster with fewer fit-band points than birth_points (far away, mostly "
+                "hidden) also starts a track when it scores at least this and no confirmed track "
+                "is within gate; a track fed only by such clusters never keeps the static grid "
+                "from learning its returns (0: never, P1)")
           .real(&P::flip_speed, "flip_speed", "m/s", 0, 10,
                 "a track moving against its heading faster than this is turned round (the "
                 "shapes give the heading modulo 180 deg)")

@@ -44,6 +44,11 @@ struct ShapeTrackerParams {
   double cog_alpha = 0.17;
   double init_speed_sigma = 1.0;  ///< a new track's speed uncertainty (m/s)
   int birth_points = 10;          ///< torso-band points a cluster needs to start a track (N_b)
+  /// Ours (#45): a cluster with fewer torso-band points than birth_points (a person far away or
+  /// mostly hidden) also starts a track when it scores at least this and no confirmed track is
+  /// within gate of it (0: never, P1). A track fed only by such clusters never keeps the static
+  /// grid from learning its returns.
+  double small_birth_score = 0;
   double flip_speed = 0.2;  ///< walking "backwards" faster than this turns the heading round (m/s)
   unsigned seed = 1;        ///< RANSAC sampling
   bool report_tentative = false;
@@ -127,6 +132,7 @@ class ShapeTracker {
     Eigen::Vector2d born_at{0, 0};
     double born = 0, moved = 0, score_sum = 0;
     int score_n = 0;
+    int full_hits = 0;  // its clusters with birth_points or more fit-band points
   };
   // A confirmed track deleted for misses, kept for re-identification (reidentify_time).
   struct LostTrack {
@@ -147,6 +153,8 @@ class ShapeTracker {
   // Static scene: whether a candidate lies on it, and the frame's returns learned into it.
   bool onStaticScene(const Candidate& c, double t) const;
   void learnStaticScene(const Frame& f);
+  // Whether a confirmed track's estimate lies within radius of q.
+  bool nearTrack(const Eigen::Vector2d& q, double radius) const;
   // Whether t keeps the static grid from learning its returns (unmoved_time).
   bool holdsPlace(const ShapeTrack& t, double now) const;
 
