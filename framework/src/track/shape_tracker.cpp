@@ -63,6 +63,7 @@ std::vector<ShapeTracker::Candidate> ShapeTracker::candidates(const Frame& f) co
       cand.cloud.points.emplace_back(d.x, d.y);  // a detection without points: its position
     }
     cand.position = fit::centroidBehindSurface(cand.cloud.points, origin, p_.observation.cog_beta);
+    cand.full = int(cand.cloud.points.size()) >= p_.birth_points;
     out.push_back(std::move(cand));
   }
   return out;
@@ -132,7 +133,7 @@ void ShapeTracker::process(Frame& f) {
       t.moved = std::max(t.moved, (t.seen_at - t.born_at).norm());
       t.score_sum += cands[i].score;
       ++t.score_n;
-      t.full_hits += int(cands[i].cloud.points.size()) >= p_.birth_points;
+      t.fed_full = t.fed_full || cands[i].full;
     } else {
       t.estimate->miss();
       ++t.misses;
@@ -154,9 +155,8 @@ void ShapeTracker::process(Frame& f) {
   // is more likely a piece of that person than someone else).
   for (std::size_t i = 0; i < cands.size(); ++i)
     if (!taken[i] && cands[i].score >= p_.q_person && !on_static[i] &&
-        (int(cands[i].cloud.points.size()) >= p_.birth_points ||
-         (p_.small_birth_score > 0 && cands[i].score >= p_.small_birth_score &&
-          !nearTrack(cands[i].position, p_.gate)))) {
+        (cands[i].full || (p_.small_birth_score > 0 && cands[i].score >= p_.small_birth_score &&
+                           !nearTrack(cands[i].position, p_.gate)))) {
       ShapeTrack t = birth(cands[i]);
       if (t.confirmed)  // M-of-N with one hit
         if (const long id = takeLostId(t.estimate->position(), f.t); id >= 0) t.id = id;
@@ -164,7 +164,7 @@ void ShapeTracker::process(Frame& f) {
       t.last_seen = t.born = f.t;
       t.score_sum = cands[i].score;
       t.score_n = 1;
-      t.full_hits = int(cands[i].cloud.points.size()) >= p_.birth_points;
+      t.fed_full = cands[i].full;
       tracks_.push_back(std::move(t));
     }
   if (scene_ && !f.motion_unknown) learnStaticScene(f);
@@ -255,7 +255,7 @@ bool ShapeTracker::holdsPlace(const ShapeTrack& t, double now) const {
   // A track fed only by small clusters (small_birth_score) never holds its place: on a few
   // returns the classifier's score says little, so a post or a bush piece far away that scores
   // high once must still become static scene; a walker's returns move and are never learned.
-  if (t.full_hits == 0) return false;
+  if (!t.fed_full) return false;
   if (p_.unmoved_time <= 0 || !t.confirmed || t.moved >= p_.unmoved_distance) return true;
   if (now - t.born < p_.unmoved_time) return true;
   return t.score_sum >= p_.unmoved_score * std::max(1, t.score_n);

@@ -115,6 +115,7 @@ class ShapeTracker {
     double score = 0;
     ShapeCloud cloud;
     Eigen::Vector2d position;
+    bool full = false;  // birth_points or more fit-band points: a shape can be fitted
   };
   struct ShapeTrack {
     long id = 0;
@@ -132,7 +133,7 @@ class ShapeTracker {
     Eigen::Vector2d born_at{0, 0};
     double born = 0, moved = 0, score_sum = 0;
     int score_n = 0;
-    int full_hits = 0;  // its clusters with birth_points or more fit-band points
+    bool fed_full = false;  // some cluster of its had birth_points or more fit-band points
   };
   // A confirmed track deleted for misses, kept for re-identification (reidentify_time).
   struct LostTrack {
