@@ -491,6 +491,45 @@ TEST_CASE("shape tracker re-identification: a person lost and back keeps their i
   CHECK(run(4, 1.5, 0, true) == std::vector<long>{1, 2});  // the fixed frame jumped meanwhile
 }
 
+TEST_CASE("shape tracker revive_score: a lost person seen again by a few returns is back at once",
+          "[shape][tracker][reid]") {
+  // A walker at 1 m/s along x, confirmed on 20 full clusters, hidden 1.5 s (deleted after
+  // max_misses = 10 scans, kept lost), then seen `offset` m beside where their walk carried them
+  // by 6 points (under N_b = 10) scoring 0.6 for 10 scans. Returns the confirmed rows' ids on
+  // those 10 scans.
+  auto back = [](double revive_score, double reidentify_time, double offset) {
+    ShapeTrackerParams p;
+    p.reidentify_time = reidentify_time;
+    p.revive_score = revive_score;
+    ShapeTracker tracker(p);
+    std::mt19937 gen(12);
+    std::vector<long> ids;
+    for (int k = 0; k < 45; ++k) {
+      const double t = 0.1 * k, x = 3 + t;
+      Frame f;
+      if (k < 20)
+        f = torsoFrame(t, torso(x, 0, 0, 0.18, 0.09, 20, 3, gen));
+      else if (k >= 35)
+        f = torsoFrame(t, torso(x, offset, 0, 0.18, 0.09, 3, 2, gen), 0.6);
+      f.t = t;
+      tracker.process(f);
+      if (k >= 35)
+        for (const Track& tr : f.tracks)
+          if (tr.status == "confirmed") ids.push_back(tr.id);
+    }
+    return ids;
+  };
+  // Back on the first scan, with their id, on every one of the 10.
+  CHECK(back(0.5, 4, 0) == std::vector<long>(10, 1));
+  // Off: 6 points start nothing (N_b), and nothing is reported.
+  CHECK(back(0, 4, 0).empty());
+  // A score under revive_score, or no lost track kept (reidentify_time 0): nothing.
+  CHECK(back(0.7, 4, 0).empty());
+  CHECK(back(0.5, 0, 0).empty());
+  // 3 m off: beyond gate + reidentify_max (2 m): someone else.
+  CHECK(back(0.5, 4, 3).empty());
+}
+
 TEST_CASE("shape tracker: a confirmed track keeps its cluster from a nearer tentative one",
           "[shape][tracker]") {
   // A person standing at (5, 0), tracked (id 1); then a second cluster (a bag put down, a split

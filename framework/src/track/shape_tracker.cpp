@@ -125,7 +125,7 @@ void ShapeTracker::process(Frame& f) {
       step(t, true, cands[i].score);
       // A person confirmed where one was lost is that person back (their id kept).
       if (t.confirmed && !was_confirmed)
-        if (const long id = takeLostId(t.estimate->position(), f.t); id >= 0) t.id = id;
+        if (const auto lost = takeLost(t.estimate->position(), f.t)) t.id = lost->id;
       t.score = cands[i].score;
       t.cluster = cands[i].cluster;
       t.seen_at = t.estimate->position();
@@ -142,7 +142,7 @@ void ShapeTracker::process(Frame& f) {
       if (!step(t, false, 0)) {
         if (was_confirmed && p_.reidentify_time > 0) {
           const Track r = t.estimate->row();  // coasting keeps the last velocity
-          lost_.push_back({t.id, t.seen_at, Eigen::Vector2d(r.vx, r.vy), t.last_seen});
+          lost_.push_back({t.id, t.seen_at, Eigen::Vector2d(r.vx, r.vy), t.last_seen, t.fed_full});
         }
         continue;
       }
@@ -152,21 +152,34 @@ void ShapeTracker::process(Frame& f) {
   tracks_ = std::move(kept);
   // A cluster too small for a shape fit (birth_points) starts a track only on a score that small
   // non-person clusters rarely reach, and only clear of every confirmed track's gate (there it
-  // is more likely a piece of that person than someone else).
-  for (std::size_t i = 0; i < cands.size(); ++i)
-    if (!taken[i] && cands[i].score >= p_.q_person && !on_static[i] &&
-        (cands[i].full || (p_.small_birth_score > 0 && cands[i].score >= p_.small_birth_score &&
-                           !nearTrack(cands[i].position, p_.gate)))) {
-      ShapeTrack t = birth(cands[i]);
-      if (t.confirmed)  // M-of-N with one hit
-        if (const long id = takeLostId(t.estimate->position(), f.t); id >= 0) t.id = id;
-      t.seen_at = t.born_at = t.estimate->position();
-      t.last_seen = t.born = f.t;
-      t.score_sum = cands[i].score;
-      t.score_n = 1;
-      t.fed_full = cands[i].full;
-      tracks_.push_back(std::move(t));
+  // is more likely a piece of that person than someone else). One where a person was lost
+  // brings them back (revive_score), whatever its size, with the same clearance.
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    if (taken[i] || on_static[i]) continue;
+    const Candidate& c = cands[i];
+    const bool clear = !nearTrack(c.position, p_.gate);
+    std::optional<LostTrack> revived;
+    if (p_.revive_score > 0 && c.score >= p_.revive_score && clear)
+      revived = takeLost(c.position, f.t);
+    const bool born =
+        c.score >= p_.q_person &&
+        (c.full || (p_.small_birth_score > 0 && c.score >= p_.small_birth_score && clear));
+    if (!born && !revived) continue;
+    ShapeTrack t = birth(c);
+    if (revived) {
+      t.id = revived->id;
+      t.life.confirm();
+      t.confirmed = true;
+    } else if (t.confirmed) {  // M-of-N with one hit
+      if (const auto lost = takeLost(t.estimate->position(), f.t)) t.id = lost->id;
     }
+    t.seen_at = t.born_at = t.estimate->position();
+    t.last_seen = t.born = f.t;
+    t.score_sum = c.score;
+    t.score_n = 1;
+    t.fed_full = c.full || (revived && revived->fed_full);
+    tracks_.push_back(std::move(t));
+  }
   if (scene_ && !f.motion_unknown) learnStaticScene(f);
   report(f);
 }
@@ -177,7 +190,7 @@ bool ShapeTracker::nearTrack(const Eigen::Vector2d& q, double radius) const {
   return false;
 }
 
-long ShapeTracker::takeLostId(const Eigen::Vector2d& q, double t) {
+std::optional<ShapeTracker::LostTrack> ShapeTracker::takeLost(const Eigen::Vector2d& q, double t) {
   // The nearest lost person by the distance to where they were last seen (they stopped) or to
   // where their last velocity carried them (they walked on behind whoever hid them), within
   // gate plus what they may have walked since, capped.
@@ -191,10 +204,10 @@ long ShapeTracker::takeLostId(const Eigen::Vector2d& q, double t) {
     const double cost = d / reid.radius(p_.gate, unseen);
     if (cost < best_cost) best = int(r), best_cost = cost;
   }
-  if (best < 0) return -1;
-  const long id = lost_[best].id;
+  if (best < 0) return std::nullopt;
+  const LostTrack lost = lost_[std::size_t(best)];
   lost_.erase(lost_.begin() + best);
-  return id;
+  return lost;
 }
 
 bool ShapeTracker::onStaticScene(const Candidate& c, double t) const {

@@ -101,6 +101,11 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
           .real(&P::reidentify_time, "reidentify_time", "s", 0, 60,
                 "ours: a confirmed track deleted for misses is kept lost until unseen this long; a "
                 "track confirmed within its radius takes its id back (0: off, P1)")
+          .real(&P::revive_score, "revive_score", "", 0, 1,
+                "ours: a cluster scoring at least this, off the static scene and clear of "
+                "confirmed tracks' gates, within a lost track's radius (reidentify_time) brings "
+                "that track back at once, confirmed, whatever its size (a person seen again by a "
+                "few returns after being hidden); 0: off")
           .real(&P::reidentify_speed, "reidentify_speed", "m/s", 0, 10,
                 "a lost track's re-identification radius grows from gate by this per second "
                 "unseen ...")

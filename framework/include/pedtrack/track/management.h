@@ -18,6 +18,11 @@ class MOfN {
   MOfN(int m, int n, int max_misses) : m_(m), n_(n), max_misses_(max_misses) {}
   TrackStatus step(bool associated);
   TrackStatus status() const { return status_; }
+  /// Confirmed from now on, without its M hits (a lost track brought back: its past is the
+  /// evidence); deleted after max_misses misses in a row as any confirmed track.
+  void confirm() {
+    if (status_ == TrackStatus::Tentative) status_ = TrackStatus::Confirmed;
+  }
 
  private:
   int m_, n_, max_misses_;

@@ -71,6 +71,14 @@ struct ShapeTrackerParams {
   /// `gate` plus reidentify_speed times the time unseen, at most reidentify_max more; distances are
   /// to where the person was last seen and to where their last velocity carried them. 0: off (P1).
   double reidentify_time = 0;
+  /// Ours (#45): a cluster scoring at least this, off the static scene and clear of every
+  /// confirmed track's gate, within a lost track's re-identification radius (reidentify_time)
+  /// brings that track back at once, confirmed, whatever its size. A person hidden behind others
+  /// for longer than max_misses scans comes back into view a few returns at a time: such
+  /// clusters start no track (birth_points) or one that takes a second to confirm, and the
+  /// person went unreported meanwhile. 0: off (a lost person's id only returns with a new
+  /// track's confirmation).
+  double revive_score = 0;
   /// Ours (#45): s. A confirmed track that has stayed within unmoved_distance of where it was
   /// born for this long, and whose detections' mean classifier score is below unmoved_score,
   /// no longer keeps the static grid from learning its returns (static_scene): a bin or a post
@@ -140,6 +148,7 @@ class ShapeTracker {
     long id = 0;
     Eigen::Vector2d seen_at, seen_v;
     double last_seen = 0;
+    bool fed_full = false;  // ShapeTrack::fed_full, which a revived track keeps
   };
 
   std::vector<Candidate> candidates(const Frame& f) const;
@@ -148,9 +157,9 @@ class ShapeTracker {
   // status by M-of-N or by evidence (confirm_evidence); false when it is deleted.
   bool step(ShapeTrack& t, bool associated, double q) const;
   void report(Frame& f);
-  // The id of the lost track nearest q (fixed frame) within its re-identification radius at
-  // time t, taken out of lost_; -1 when there is none.
-  long takeLostId(const Eigen::Vector2d& q, double t);
+  // The lost track nearest q (fixed frame) within its re-identification radius at time t,
+  // taken out of lost_; none when there is none.
+  std::optional<LostTrack> takeLost(const Eigen::Vector2d& q, double t);
   // Static scene: whether a candidate lies on it, and the frame's returns learned into it.
   bool onStaticScene(const Candidate& c, double t) const;
   void learnStaticScene(const Frame& f);
