@@ -496,16 +496,18 @@ TEST_CASE("shape tracker revive_score: a lost person seen again by a few returns
   // A walker at 1 m/s along x, confirmed on 20 full clusters, hidden 1.5 s (deleted after
   // max_misses = 10 scans, kept lost), then seen `offset` m beside where their walk carried them
   // by 6 points (under N_b = 10) scoring 0.6 for 10 scans. Returns the confirmed rows' ids on
-  // those 10 scans.
-  auto back = [](double revive_score, double reidentify_time, double offset) {
+  // those 10 scans. `x0`: where the walk starts; `grid`: with the static scene on.
+  auto back = [](double revive_score, double reidentify_time, double offset, double x0 = 3,
+                 bool grid = false) {
     ShapeTrackerParams p;
     p.reidentify_time = reidentify_time;
     p.revive_score = revive_score;
+    p.static_scene = grid;
     ShapeTracker tracker(p);
     std::mt19937 gen(12);
     std::vector<long> ids;
     for (int k = 0; k < 45; ++k) {
-      const double t = 0.1 * k, x = 3 + t;
+      const double t = 0.1 * k, x = x0 + t;
       Frame f;
       if (k < 20)
         f = torsoFrame(t, torso(x, 0, 0, 0.18, 0.09, 20, 3, gen));
@@ -528,6 +530,11 @@ TEST_CASE("shape tracker revive_score: a lost person seen again by a few returns
   CHECK(back(0.5, 0, 0).empty());
   // 3 m off: beyond gate + reidentify_max (2 m): someone else.
   CHECK(back(0.5, 4, 3).empty());
+  // With the static scene on: back within the grid's range (20 m), not beyond it, where a wall
+  // or bush fragment cannot be told from them.
+  CHECK(back(0.5, 4, 0, 3, true) == std::vector<long>(10, 1));
+  CHECK(back(0.5, 4, 0, 21, true).empty());
+  CHECK(back(0.5, 4, 0, 21, false) == std::vector<long>(10, 1));
 }
 
 TEST_CASE("shape tracker: a confirmed track keeps its cluster from a nearer tentative one",

@@ -159,7 +159,7 @@ void ShapeTracker::process(Frame& f) {
     const Candidate& c = cands[i];
     const bool clear = !nearTrack(c.position, p_.gate);
     std::optional<LostTrack> revived;
-    if (p_.revive_score > 0 && c.score >= p_.revive_score && clear)
+    if (p_.revive_score > 0 && c.score >= p_.revive_score && clear && vouched(c))
       revived = takeLost(c.position, f.t);
     const bool born =
         c.score >= p_.q_person &&
@@ -182,6 +182,13 @@ void ShapeTracker::process(Frame& f) {
   }
   if (scene_ && !f.motion_unknown) learnStaticScene(f);
   report(f);
+}
+
+bool ShapeTracker::vouched(const Candidate& c) const {
+  // Beyond the static grid's range nothing is learned: a wall or bush fragment there scoring
+  // revive_score would bring a person lost nearby back onto it for good (P1's corridor: a walker
+  // lost at 25 m, revived on the wall beside them, held 12 s).
+  return !scene_ || (c.position - c.cloud.origin).norm() <= p_.scene.max_range;
 }
 
 bool ShapeTracker::nearTrack(const Eigen::Vector2d& q, double radius) const {

@@ -105,7 +105,8 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
                 "ours: a cluster scoring at least this, off the static scene and clear of "
                 "confirmed tracks' gates, within a lost track's radius (reidentify_time) brings "
                 "that track back at once, confirmed, whatever its size (a person seen again by a "
-                "few returns after being hidden); 0: off")
+                "few returns after being hidden); with static_scene, only within the grid's "
+                "range; 0: off")
           .real(&P::reidentify_speed, "reidentify_speed", "m/s", 0, 10,
                 "a lost track's re-identification radius grows from gate by this per second "
                 "unseen ...")

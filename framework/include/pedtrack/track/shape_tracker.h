@@ -76,8 +76,9 @@ struct ShapeTrackerParams {
   /// brings that track back at once, confirmed, whatever its size. A person hidden behind others
   /// for longer than max_misses scans comes back into view a few returns at a time: such
   /// clusters start no track (birth_points) or one that takes a second to confirm, and the
-  /// person went unreported meanwhile. 0: off (a lost person's id only returns with a new
-  /// track's confirmation).
+  /// person went unreported meanwhile. With static_scene on, only within the grid's range
+  /// (scene.max_range): beyond it no cluster is known to be static. 0: off (a lost person's id
+  /// only returns with a new track's confirmation).
   double revive_score = 0;
   /// Ours (#45): s. A confirmed track that has stayed within unmoved_distance of where it was
   /// born for this long, and whose detections' mean classifier score is below unmoved_score,
@@ -163,6 +164,9 @@ class ShapeTracker {
   // Static scene: whether a candidate lies on it, and the frame's returns learned into it.
   bool onStaticScene(const Candidate& c, double t) const;
   void learnStaticScene(const Frame& f);
+  // Whether the static grid vouches for c not being static scene (revive_score): it lies within
+  // the grid's range, or there is no grid.
+  bool vouched(const Candidate& c) const;
   // Whether a confirmed track's estimate lies within radius of q.
   bool nearTrack(const Eigen::Vector2d& q, double radius) const;
   // Whether t keeps the static grid from learning its returns (unmoved_time).
