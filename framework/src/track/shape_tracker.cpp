@@ -157,13 +157,13 @@ void ShapeTracker::process(Frame& f) {
   for (std::size_t i = 0; i < cands.size(); ++i) {
     if (taken[i] || on_static[i]) continue;
     const Candidate& c = cands[i];
-    const bool clear = !nearTrack(c.position, p_.gate);
+    const bool small_birth = !c.full && p_.small_birth_score > 0 && c.score >= p_.small_birth_score;
+    const bool may_revive = p_.revive_score > 0 && c.score >= p_.revive_score && vouched(c);
+    // The clearance is looked up only for a cluster that needs it (every track, per cluster).
+    const bool clear = (small_birth || may_revive) && !nearTrack(c.position, p_.gate);
     std::optional<LostTrack> revived;
-    if (p_.revive_score > 0 && c.score >= p_.revive_score && clear && vouched(c))
-      revived = takeLost(c.position, f.t);
-    const bool born =
-        c.score >= p_.q_person &&
-        (c.full || (p_.small_birth_score > 0 && c.score >= p_.small_birth_score && clear));
+    if (may_revive && clear) revived = takeLost(c.position, f.t);
+    const bool born = c.score >= p_.q_person && (c.full || (small_birth && clear));
     if (!born && !revived) continue;
     ShapeTrack t = birth(c);
     if (revived) {
