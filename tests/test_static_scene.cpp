@@ -1,7 +1,8 @@
 // Static-scene suppression: walls become static after `persist` seconds and not before; a tracked
 // person standing for a minute never does, nor do the cells a passer-by leaves; prior maps (ROS
 // map_server, MRPT) load with their geometry; bad map files are named in the error; the grid
-// follows a moving robot; the 3D (points) entry behaves like the scan one. Prints update() cost.
+// follows a moving robot; the 3D (points) entry behaves like the scan one, and with heights a
+// static cell holds only returns near the heights it was hit at. Prints update() cost.
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/serialization/CArchive.h>
@@ -232,6 +233,34 @@ TEST_CASE("points of a 3D sensor: walls become static, excluded people do not", 
   for (double t1 = t + 2; t < t1; t += 0.1) ss.updatePoints(t, sensor, pts, {person});
   CHECK_FALSE(ss.isStatic(3.01, 1.0, t));
   CHECK(ss.occupancy(3.01, 1.0) < 0.5);
+}
+
+TEST_CASE("with heights, a static cell holds only returns near the heights it was hit at",
+          "[static_scene]") {
+  // A bench back 0.9 m high, seen on rings at 0.3, 0.6 and 0.85 m, learned for 5 s. A sitter's
+  // head at 1.25 m beside it is no part of it; their chest at 0.8 m is.
+  StaticScene ss;
+  const V2 sensor(0, 0);
+  std::vector<V2> pts;
+  std::vector<float> z;
+  for (double y = -0.9; y <= 0.9; y += 0.02)
+    for (const float h : {0.3f, 0.6f, 0.85f}) {
+      pts.emplace_back(kWallX, y);
+      z.push_back(h);
+    }
+  double t = kT0;
+  for (; t < kT0 + 5; t += 0.1) ss.updatePoints(t, sensor, pts, {}, &z);
+  const double x = kWallX - 0.2;                       // 0.2 m in front of the bench back
+  CHECK(ss.isStatic(x, 0, t, 0.3));                    // 2D: on it
+  CHECK(ss.isStatic(x, 0, 0.8, 0.25, t, 0.3));         // within its heights
+  CHECK(ss.isStatic(x, 0, 1.05, 0.25, t, 0.3));        // within the margin above its top
+  CHECK_FALSE(ss.isStatic(x, 0, 1.25, 0.25, t, 0.3));  // a head above it
+  CHECK_FALSE(ss.isStatic(x, 0, 0.8, 0.25, t, 0.1));   // nor near it at all
+  CHECK(ss.isStatic(x, 0, NAN, 0.25, t, 0.3));         // a return without height: 2D
+  // Cells learned without heights (a 2D scan's, or a sensor that gives none) hold every height.
+  StaticScene flat;
+  for (t = kT0; t < kT0 + 5; t += 0.1) flat.updatePoints(t, sensor, pts, {});
+  CHECK(flat.isStatic(x, 0, 1.25, 0.25, t, 0.3));
 }
 
 TEST_CASE("rays clear free space in every direction, diagonals included", "[static_scene]") {

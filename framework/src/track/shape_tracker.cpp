@@ -57,6 +57,7 @@ std::vector<ShapeTracker::Candidate> ShapeTracker::candidates(const Frame& f) co
         if (h < p_.fit_min_height || h > p_.fit_max_height) continue;
         // Robot frame → fixed frame (the robot's planar pose; its tilt is the ground stage's).
         cand.cloud.points.emplace_back(rx + c * xs[k] - s * ys[k], ry + s * xs[k] + c * ys[k]);
+        cand.heights.push_back(float(h));
       }
       if (cand.cloud.points.empty()) continue;
     } else {
@@ -220,8 +221,14 @@ std::optional<ShapeTracker::LostTrack> ShapeTracker::takeLost(const Eigen::Vecto
 bool ShapeTracker::onStaticScene(const Candidate& c, double t) const {
   if (!scene_ || c.cloud.points.empty()) return false;
   std::size_t on = 0;
-  for (const Eigen::Vector2d& q : c.cloud.points)
-    on += scene_->isStatic(q.x(), q.y(), t, p_.static_radius);
+  // A point above (or below) every height the static cells round it were hit at is no part of
+  // them: a sitter's head over the bench back, a person's shoulders over a car bonnet.
+  const bool by_height = p_.static_height_margin >= 0;
+  for (std::size_t k = 0; k < c.cloud.points.size(); ++k) {
+    const Eigen::Vector2d& q = c.cloud.points[k];
+    const double z = by_height ? double(c.heights[k]) : NAN;
+    on += scene_->isStatic(q.x(), q.y(), z, p_.static_height_margin, t, p_.static_radius);
+  }
   return double(on) >= p_.static_share * double(c.cloud.points.size());
 }
 
@@ -233,16 +240,20 @@ void ShapeTracker::learnStaticScene(const Frame& f) {
   const double c = std::cos(f.robot_pose.yaw()), s = std::sin(f.robot_pose.yaw());
   const double rx = f.robot_pose.x(), ry = f.robot_pose.y();
   obstacles_.clear();
+  obstacle_z_.clear();
   for (const Cluster& cl : f.clusters)
     for (std::uint32_t k : cl.indices)
-      if (k < xs.size())
+      if (k < xs.size()) {
         obstacles_.emplace_back(rx + c * xs[k] - s * ys[k], ry + s * xs[k] + c * ys[k]);
+        obstacle_z_.push_back(float(f.heightOf(k)));
+      }
   // A person walking with the robot, or standing while tracked, is never learned: their
   // track (confirmed or not) holds their place.
   people_.clear();
   for (const ShapeTrack& t : tracks_)
     if (holdsPlace(t, f.t)) people_.push_back(t.estimate->position());
-  scene_->updatePoints(f.t, {f.sensor_pose.x(), f.sensor_pose.y()}, obstacles_, people_);
+  scene_->updatePoints(f.t, {f.sensor_pose.x(), f.sensor_pose.y()}, obstacles_, people_,
+                       &obstacle_z_);
 }
 
 bool ShapeTracker::step(ShapeTrack& t, bool associated, double q) const {

@@ -80,6 +80,10 @@ const ParamTable<ShapeTrackerParams>& ShapeTracker::commonTable() {
           .real(&P::static_radius, "static_radius", "m", 0, 2,
                 "a fit-band point counts as on static cells when one lies within this distance "
                 "(porous foliage leaves gaps in the grid; 0: the point's own cell)")
+          .real(&P::static_height_margin, "static_height_margin", "m", -1, 10,
+                "ours: a fit-band point counts as on static cells only within this height of "
+                "the returns those cells were learned from (a sitter's head above a bench "
+                "back, shoulders above a car bonnet are not); < 0: heights ignored")
           .real(path(&P::scene, &StaticScene::Options::persist), "static_persist", "s", 0, 3600,
                 "a cell occupied this long (not near a track) is static scene: longer than a "
                 "walker's stance, shorter than a moving robot sees a parked car")

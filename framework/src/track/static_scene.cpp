@@ -159,7 +159,7 @@ void StaticScene::recentre(double x, double y) {
   g.setSize(float(x0), float(x0 + 2 * half * res), float(y0), float(y0 + 2 * half * res),
             float(res), 0.5f);
   const int w = int(g.getSizeX()), h = int(g.getSizeY());
-  std::vector<Run> runs(std::size_t(w) * h, Run{kNaN, kNaN});
+  std::vector<Run> runs(std::size_t(w) * h, Run{kNaN, kNaN, kNaN, kNaN});
   if (!runs_.empty()) {
     const int ow = int(grid_.getSizeX()), oh = int(grid_.getSizeY());
     const int dx = int(std::lround((g.getXMin() - grid_.getXMin()) / res));
@@ -224,6 +224,7 @@ void StaticScene::update(const Frame& f, const std::vector<Eigen::Vector2d>& peo
     int skip = int(scans_++ % opt_.clear_every);
     clear_to_.clear();
     hits_.clear();
+    hit_z_.clear();
     const Eigen::Vector2d sensor(sx, sy);
     for (std::size_t i = 0; i < n; ++i) {
       // Packed 2-vectors throughout: built from two scalars, the points cost a stalled
@@ -249,8 +250,10 @@ void StaticScene::update(const Frame& f, const std::vector<Eigen::Vector2d>& peo
 
 void StaticScene::updatePoints(double t, const Eigen::Vector2d& sensor_xy_fixed,
                                const std::vector<Eigen::Vector2d>& points_fixed,
-                               const std::vector<Eigen::Vector2d>& people_fixed) {
+                               const std::vector<Eigen::Vector2d>& people_fixed,
+                               const std::vector<float>* heights) {
   if (!beginUpdate(t, sensor_xy_fixed.x(), sensor_xy_fixed.y())) return;
+  if (heights && heights->size() != points_fixed.size()) heights = nullptr;
   setPeople(people_fixed);
   const double sx = sensor_xy_fixed.x(), sy = sensor_xy_fixed.y();
   // Unlike a 2D scan, points are no rays: many share a bearing at different heights. Clearing
@@ -260,6 +263,7 @@ void StaticScene::updatePoints(double t, const Eigen::Vector2d& sensor_xy_fixed,
   bin_pt_.assign(kBearingBins, 0);
   clear_to_.clear();
   hits_.clear();
+  hit_z_.clear();
   const double max2 = opt_.max_range * opt_.max_range;
   for (std::size_t k = 0; k < points_fixed.size(); ++k) {
     const double dx = points_fixed[k].x() - sx, dy = points_fixed[k].y() - sy;
@@ -275,8 +279,10 @@ void StaticScene::updatePoints(double t, const Eigen::Vector2d& sensor_xy_fixed,
       bin_range_[b] = float(r2);
       bin_pt_[b] = std::uint32_t(k);
     }
-    if (r2 < max2 && !nearPerson(points_fixed[k].x(), points_fixed[k].y(), people_fixed))
+    if (r2 < max2 && !nearPerson(points_fixed[k].x(), points_fixed[k].y(), people_fixed)) {
       hits_.push_back(points_fixed[k]);
+      if (heights) hit_z_.push_back((*heights)[k]);
+    }
   }
   for (int b = 0; b < kBearingBins; ++b) {
     if (!std::isfinite(bin_range_[b])) continue;
@@ -339,7 +345,9 @@ void StaticScene::castRays(double sx, double sy, double t) {
     }
   }
   const float tr = float(t - t0_), persist = float(opt_.persist), max_gap = float(opt_.max_gap);
-  for (const Eigen::Vector2d& hit : hits_) {
+  const bool with_z = hit_z_.size() == hits_.size();
+  for (std::size_t n = 0; n < hits_.size(); ++n) {
+    const Eigen::Vector2d& hit = hits_[n];
     const double gx = (hit.x() - xmin) / res, gy = (hit.y() - ymin) / res;
     if (!(gx >= 0 && gx < w && gy >= 0 && gy < h)) continue;
     const std::size_t k = std::size_t(int(gy)) * w + std::size_t(int(gx));
@@ -353,8 +361,16 @@ void StaticScene::castRays(double sx, double sy, double t) {
     // any occlusion, until rays clear it.
     Run& run = runs_[k];
     const bool is_static = run.last - run.since >= persist;  // false while since is NaN
-    if (!was_occupied || std::isnan(run.since) || (!is_static && tr - run.last > max_gap))
+    const float z = with_z ? hit_z_[n] : kNaN;
+    if (!was_occupied || std::isnan(run.since) || (!is_static && tr - run.last > max_gap)) {
       run.since = tr;
+      run.zlo = run.zhi = z;
+    } else if (!std::isnan(run.zlo)) {
+      run.zlo = std::min(run.zlo, z);  // a hit without height (NaN) leaves them as they are
+      run.zhi = std::max(run.zhi, z);
+    } else {
+      run.zlo = run.zhi = kNaN;  // heights only when every hit of the run had one
+    }
     run.last = tr;
   }
 }
@@ -368,33 +384,57 @@ bool StaticScene::cellStatic(int cx, int cy, float t_rel) const {
   return !std::isnan(run.since) && std::min(t_rel, run.last) - run.since >= float(opt_.persist);
 }
 
-bool StaticScene::isStatic(double x, double y, double t, double radius) const {
+template <class Test>
+bool StaticScene::anyCell(double x, double y, double radius, const COccupancyGridMap2D& g,
+                          Test&& test) {
   // The cell holding (x, y), and every cell with a part within radius of it (a prior map's
   // cells may be far larger than the radius).
-  auto any = [&](const COccupancyGridMap2D& g, auto&& test) {
-    const double res = g.getResolution(), gx = (x - g.getXMin()) / res,
-                 gy = (y - g.getYMin()) / res;
-    const int cx = int(std::floor(gx)), cy = int(std::floor(gy));
-    if (test(cx, cy)) return true;
-    const double rr = radius / res;
-    const int k = int(std::ceil(rr));
-    for (int j = cy - k; j <= cy + k; ++j)
-      for (int i = cx - k; i <= cx + k; ++i) {
-        const double ex = std::max({i - gx, 0.0, gx - (i + 1)});
-        const double ey = std::max({j - gy, 0.0, gy - (j + 1)});
-        if (ex * ex + ey * ey <= rr * rr && test(i, j)) return true;
-      }
-    return false;
-  };
+  const double res = g.getResolution(), gx = (x - g.getXMin()) / res, gy = (y - g.getYMin()) / res;
+  const int cx = int(std::floor(gx)), cy = int(std::floor(gy));
+  if (test(cx, cy)) return true;
+  const double rr = radius / res;
+  const int k = int(std::ceil(rr));
+  for (int j = cy - k; j <= cy + k; ++j)
+    for (int i = cx - k; i <= cx + k; ++i) {
+      const double ex = std::max({i - gx, 0.0, gx - (i + 1)});
+      const double ey = std::max({j - gy, 0.0, gy - (j + 1)});
+      if (ex * ex + ey * ey <= rr * rr && test(i, j)) return true;
+    }
+  return false;
+}
+
+bool StaticScene::isStatic(double x, double y, double t, double radius) const {
+  return isStatic(x, y, kNaN, 0, t, radius);
+}
+
+bool StaticScene::isStatic(double x, double y, double z, double z_margin, double t,
+                           double radius) const {
   if (prior_) {
     const float free_below = float(1 - opt_.occupied);
     // getCell() is 0.5 (unknown) off the map.
-    if (any(*prior_, [&](int i, int j) { return prior_->getCell(i, j) <= free_below; }))
+    if (anyCell(x, y, radius, *prior_,
+                [&](int i, int j) { return prior_->getCell(i, j) <= free_below; }))
       return true;
   }
   if (!started_) return false;
   const float t_rel = float(t - t0_);
-  return any(grid_, [&](int i, int j) { return cellStatic(i, j, t_rel); });
+  const int w = int(grid_.getSizeX());
+  if (std::isnan(z))
+    return anyCell(x, y, radius, grid_, [&](int i, int j) { return cellStatic(i, j, t_rel); });
+  // The heights the static cells round (x, y) were hit at, together (porous foliage hits each
+  // cell on a ring or two only; the object spans them all).
+  float lo = INFINITY, hi = -INFINITY;
+  bool no_heights = false;
+  anyCell(x, y, radius, grid_, [&](int i, int j) {
+    if (!cellStatic(i, j, t_rel)) return false;
+    const Run& run = runs_[std::size_t(j) * w + i];
+    if (std::isnan(run.zlo)) return no_heights = true;
+    lo = std::min(lo, run.zlo);
+    hi = std::max(hi, run.zhi);
+    return false;
+  });
+  if (no_heights) return true;
+  return z >= lo - z_margin && z <= hi + z_margin;
 }
 
 double StaticScene::occupancy(double x, double y) const {

@@ -65,6 +65,11 @@ struct ShapeTrackerParams {
   /// scene.exclusion_radius of it unlearned, so the cells under the next fragment there rarely
   /// become static; the hedge on either side, out of that disc, does. 0: the point's own cell.
   double static_radius = 0.3;
+  /// Ours (#45), m: with this ≥ 0, a torso point counts as on the static scene only when its
+  /// height lies within this margin of the heights the static cells round it were hit at (the
+  /// grid is 2D: without heights a sitter against a bench back, or a person beside a car, is
+  /// on static cells). < 0: heights ignored.
+  double static_height_margin = -1;
   /// Ours (#45): a confirmed track deleted after max_misses is kept lost (not reported) until it
   /// has been unseen this many seconds; a new track confirmed within its re-identification radius
   /// takes its id back (the identity only: what is reported and when is unchanged). The radius is
@@ -123,6 +128,7 @@ class ShapeTracker {
     int detection = -1, cluster = -1;
     double score = 0;
     ShapeCloud cloud;
+    std::vector<float> heights;  // of cloud.points, above the ground
     Eigen::Vector2d position;
     bool full = false;  // birth_points or more fit-band points: a shape can be fitted
   };
@@ -181,6 +187,7 @@ class ShapeTracker {
   std::mt19937 rng_;
   std::vector<ShapeTrack> tracks_;
   std::vector<LostTrack> lost_;
+  std::vector<float> obstacle_z_;
   std::vector<Eigen::Vector2d> obstacles_, people_;  ///< scratch for learnStaticScene
 };
 

@@ -12,7 +12,9 @@
 // pass a cell give it a span far below `persist`. An optional prior map (a ROS map_server map
 // or an MRPT grid map) marks its occupied cells static from the start. 2D scans go through
 // update(), any other sensor's obstacle points (a 3D pipeline's, ground removed) through
-// updatePoints().
+// updatePoints(), optionally with their heights: each cell then keeps the height span of its
+// run's hits, and isStatic() can ask whether a return at a given height belongs to it (the grid
+// is 2D; a person beside a bench back is not the bench).
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <Eigen/Core>
@@ -98,15 +100,22 @@ class StaticScene {
   /// ground already removed), seen from `sensor_xy_fixed` at time t (s). Every point within
   /// max_range marks its cell unless near a person; space is cleared up to the nearest point
   /// in each ~0.25° of bearing (free space up to the first obstacle, as a 2D scan would see it).
+  /// `heights` (one per point, m above the ground; ignored when of another size) are kept per
+  /// cell for the height-aware isStatic().
   void updatePoints(double t, const Eigen::Vector2d& sensor_xy_fixed,
                     const std::vector<Eigen::Vector2d>& points_fixed,
-                    const std::vector<Eigen::Vector2d>& people_fixed);
+                    const std::vector<Eigen::Vector2d>& people_fixed,
+                    const std::vector<float>* heights = nullptr);
 
   /// True when the place (x, y) (fixed frame) is static at time t: its cell's occupancy was
   /// seen over ≥ persist seconds up to t, or the prior map has it occupied. With radius > 0,
   /// true when any cell within radius (m) is static (a leg-circle centre lies a few cm behind
   /// the surface it was fitted to).
   bool isStatic(double x, double y, double t, double radius = 0) const;
+  /// The same for a return at height z: a static cell counts only when z lies within
+  /// z_margin of the heights its own returns had (a person's head above a bench or a car
+  /// bonnet is no part of it). Cells learned without heights count at any z.
+  bool isStatic(double x, double y, double z, double z_margin, double t, double radius) const;
 
   /// Forgets everything the grid learned (the prior map stays): the fixed frame moved by an
   /// unknown amount (Frame::motion_unknown), so what was learned may now lie anywhere.
@@ -134,6 +143,7 @@ class StaticScene {
   /// NaN start = not in a run.
   struct Run {
     float since, last;
+    float zlo, zhi;  ///< heights of the run's hits (NaN: learned without heights)
   };
   bool beginUpdate(double t, double sensor_x, double sensor_y);
   void recentre(double x, double y);
@@ -143,6 +153,11 @@ class StaticScene {
   void setPeople(const std::vector<Eigen::Vector2d>& people);
   bool nearPerson(double x, double y, const std::vector<Eigen::Vector2d>& people) const;
   bool cellStatic(int cx, int cy, float t_rel) const;
+  /// Whether test(i, j) holds for the cell of g holding (x, y) or any cell with a part within
+  /// radius of it (defined in the .cpp, its only user).
+  template <class Test>
+  static bool anyCell(double x, double y, double radius, const mrpt::maps::COccupancyGridMap2D& g,
+                      Test&& test);
 
   Options opt_;
   mrpt::maps::COccupancyGridMap2D grid_;
@@ -154,6 +169,7 @@ class StaticScene {
   long calls_ = 0;
   long scans_ = 0;
   std::vector<Eigen::Vector2d> clear_to_, hits_;  ///< scratch, reused
+  std::vector<float> hit_z_;                      ///< heights of hits_ (empty: none)
   Eigen::Vector2d people_lo_, people_hi_;         ///< box round this update's exclusion discs
   std::vector<float> bin_range_;                  ///< scratch for updatePoints
   std::vector<std::uint32_t> bin_pt_;             ///< scratch for updatePoints
