@@ -335,6 +335,46 @@ TEST_CASE("shape tracker static scene: a post learned starts no track; a tracked
   CHECK(after == 1);
 }
 
+TEST_CASE("shape tracker static scene: a person beside a low static object is no part of it",
+          "[shape][tracker][static]") {
+  // A bench back (returns at 0.6, 0.75 and 0.85 m along 1.8 m, scoring 0.3) is learned for 4 s;
+  // then a sitter, 0.1-0.2 m in front of it with torso returns from 0.9 to 1.65 m, scores 0.9.
+  // Read in 2D every return of theirs lies within static_radius of the back's cells and no
+  // track starts; with static_height_margin (0.25 m) the four rings above 1.1 m are not the
+  // back's, and the sitter is tracked. A detection without points beside them (no height)
+  // starts nothing and costs nothing.
+  auto run = [](double margin) {
+    ShapeTrackerParams p;
+    p.static_scene = true;
+    p.static_height_margin = margin;
+    ShapeTracker tracker(p);
+    std::mt19937 gen(8);
+    std::vector<std::array<float, 3>> back;
+    for (double y = -0.9; y <= 0.9; y += 0.05)
+      for (const float z : {0.6f, 0.75f, 0.85f}) back.push_back({5.0f, float(y), z});
+    std::size_t reported = 0;
+    for (int k = 0; k < 60; ++k) {
+      std::vector<std::vector<std::array<float, 3>>> sets{back};
+      std::vector<double> scores{0.3};
+      if (k >= 40) {
+        sets.push_back(torso(4.9, 0, M_PI, 0.18, 0.09, 10, 6, gen));
+        scores.push_back(0.9);
+      }
+      Frame f = clustersFrame(0.1 * k, sets, scores);
+      Detection pointless;
+      pointless.x = 4.9;
+      pointless.y = 3.0;
+      pointless.score = 0.9;
+      f.detections.push_back(pointless);
+      tracker.process(f);
+      reported = std::max(reported, f.tracks.size());
+    }
+    return reported;
+  };
+  CHECK(run(-1) == 0);
+  CHECK(run(0.25) == 1);
+}
+
 TEST_CASE("shape tracker static scene: an unmoved track that scores low gives its place up",
           "[shape][tracker][static]") {
   // A bin scoring 0.6 from the first scan (above q_person) gets a confirmed track at start-up,

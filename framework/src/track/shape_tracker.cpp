@@ -226,7 +226,8 @@ bool ShapeTracker::onStaticScene(const Candidate& c, double t) const {
   const bool by_height = p_.static_height_margin >= 0;
   for (std::size_t k = 0; k < c.cloud.points.size(); ++k) {
     const Eigen::Vector2d& q = c.cloud.points[k];
-    const double z = by_height ? double(c.heights[k]) : NAN;
+    // A detection without points has no height (k beyond heights): tested in 2D.
+    const double z = by_height && k < c.heights.size() ? double(c.heights[k]) : NAN;
     on += scene_->isStatic(q.x(), q.y(), z, p_.static_height_margin, t, p_.static_radius);
   }
   return double(on) >= p_.static_share * double(c.cloud.points.size());

@@ -128,7 +128,7 @@ class ShapeTracker {
     int detection = -1, cluster = -1;
     double score = 0;
     ShapeCloud cloud;
-    std::vector<float> heights;  // of cloud.points, above the ground
+    std::vector<float> heights;  // of cloud.points, above the ground (none without a cluster)
     Eigen::Vector2d position;
     bool full = false;  // birth_points or more fit-band points: a shape can be fitted
   };
@@ -187,8 +187,8 @@ class ShapeTracker {
   std::mt19937 rng_;
   std::vector<ShapeTrack> tracks_;
   std::vector<LostTrack> lost_;
-  std::vector<float> obstacle_z_;
   std::vector<Eigen::Vector2d> obstacles_, people_;  ///< scratch for learnStaticScene
+  std::vector<float> obstacle_z_;                    ///< heights of obstacles_, scratch too
 };
 
 /// The tracker stage of a shape-tracker plugin: the common parameters read from `params`, then
