@@ -240,13 +240,15 @@ void ShapeTracker::learnStaticScene(const Frame& f) {
   const auto& ys = cloud.getPointsBufferRef_y();
   const double c = std::cos(f.robot_pose.yaw()), s = std::sin(f.robot_pose.yaw());
   const double rx = f.robot_pose.x(), ry = f.robot_pose.y();
+  // Their heights only when the static test reads them (static_height_margin).
+  const bool by_height = p_.static_height_margin >= 0;
   obstacles_.clear();
   obstacle_z_.clear();
   for (const Cluster& cl : f.clusters)
     for (std::uint32_t k : cl.indices)
       if (k < xs.size()) {
         obstacles_.emplace_back(rx + c * xs[k] - s * ys[k], ry + s * xs[k] + c * ys[k]);
-        obstacle_z_.push_back(float(f.heightOf(k)));
+        if (by_height) obstacle_z_.push_back(float(f.heightOf(k)));
       }
   // A person walking with the robot, or standing while tracked, is never learned: their
   // track (confirmed or not) holds their place.
@@ -254,7 +256,7 @@ void ShapeTracker::learnStaticScene(const Frame& f) {
   for (const ShapeTrack& t : tracks_)
     if (holdsPlace(t, f.t)) people_.push_back(t.estimate->position());
   scene_->updatePoints(f.t, {f.sensor_pose.x(), f.sensor_pose.y()}, obstacles_, people_,
-                       &obstacle_z_);
+                       by_height ? &obstacle_z_ : nullptr);
 }
 
 bool ShapeTracker::step(ShapeTrack& t, bool associated, double q) const {

@@ -365,11 +365,9 @@ void StaticScene::castRays(double sx, double sy, double t) {
     if (!was_occupied || std::isnan(run.since) || (!is_static && tr - run.last > max_gap)) {
       run.since = tr;
       run.zlo = run.zhi = z;
-    } else if (!std::isnan(run.zlo)) {
-      run.zlo = std::min(run.zlo, z);  // a hit without height (NaN) leaves them as they are
+    } else if (!std::isnan(run.zlo)) {  // a run begun without heights stays without
+      run.zlo = std::min(run.zlo, z);   // a hit without height (NaN) leaves them as they are
       run.zhi = std::max(run.zhi, z);
-    } else {
-      run.zlo = run.zhi = kNaN;  // heights only when every hit of the run had one
     }
     run.last = tr;
   }
@@ -423,18 +421,16 @@ bool StaticScene::isStatic(double x, double y, double z, double z_margin, double
     return anyCell(x, y, radius, grid_, [&](int i, int j) { return cellStatic(i, j, t_rel); });
   // The heights the static cells round (x, y) were hit at, together (porous foliage hits each
   // cell on a ring or two only; the object spans them all).
+  // The span only grows, so the first cell that brings z within it settles the answer.
   float lo = INFINITY, hi = -INFINITY;
-  bool no_heights = false;
-  anyCell(x, y, radius, grid_, [&](int i, int j) {
+  return anyCell(x, y, radius, grid_, [&](int i, int j) {
     if (!cellStatic(i, j, t_rel)) return false;
     const Run& run = runs_[std::size_t(j) * w + i];
-    if (std::isnan(run.zlo)) return no_heights = true;
+    if (std::isnan(run.zlo)) return true;
     lo = std::min(lo, run.zlo);
     hi = std::max(hi, run.zhi);
-    return false;
+    return z >= lo - z_margin && z <= hi + z_margin;
   });
-  if (no_heights) return true;
-  return z >= lo - z_margin && z <= hi + z_margin;
 }
 
 double StaticScene::occupancy(double x, double y) const {

@@ -112,9 +112,9 @@ class StaticScene {
   /// true when any cell within radius (m) is static (a leg-circle centre lies a few cm behind
   /// the surface it was fitted to).
   bool isStatic(double x, double y, double t, double radius = 0) const;
-  /// The same for a return at height z: a static cell counts only when z lies within
-  /// z_margin of the heights its own returns had (a person's head above a bench or a car
-  /// bonnet is no part of it). Cells learned without heights count at any z.
+  /// The same for a return at height z: true when z lies within z_margin of the heights the
+  /// static cells within radius were hit at, taken together (a person's head above a bench or
+  /// a car bonnet is no part of it). A cell learned without heights holds any z; z NaN: 2D.
   bool isStatic(double x, double y, double z, double z_margin, double t, double radius) const;
 
   /// Forgets everything the grid learned (the prior map stays): the fixed frame moved by an
